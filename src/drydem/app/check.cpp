@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// `drydem check`: every derived quantity of a configuration (counts, wet height, scaled
+// parameters, time step and its limits, memory and cost estimate).
+#include "drydem/app/commands.hpp"
+#include "drydem/drying/scaling.hpp"
+#include "drydem/integrate/timestep.hpp"
+#include "drydem/setup/formulation.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace drydem::app {
+
+void print_check(const Config& c) {
+    const FilmRecipe r = make_recipe(c);
+    const ScaledParameters s = scale_parameters(c);
+    const ForceField ff = make_drying_force_field(c, r, s);
+    constexpr double pi = std::numbers::pi;
+    fmt::print("configuration '{}' is valid\n\n", c.name);
+    fmt::print("Film (model.md M-1)\n");
+    fmt::print("  box                       {:.4g} x {:.4g} um (periodic x, y)\n", c.box_x * 1e6, c.box_y * 1e6);
+    fmt::print("  areal loading             {:.4g} mg/cm2 nominal, {:.4g} mg/cm2 realised (C-3)\n",
+               c.areal_loading * 100, r.realised_dry_mass() / r.base_area * 100);
+    fmt::print("  solids density (Eq. 4)    {:.5g} g/cm3\n", r.solids_density * 1e-3);
+    fmt::print("  wet film height (Eq. 3)   {:.5g} um\n", r.wet_film_height * 1e6);
+    fmt::print("  CB particle density       {:.5g} g/cm3 (porosity {:.3g}, pores filled with solvent)\n",
+               r.cb_effective_density * 1e-3, c.cb_porosity);
+    fmt::print("  species                   type  diameter_um  count  (unrounded)  density_g_cm3\n");
+    int type = 1;
+    for (const SizeClass& sc : r.species)
+        fmt::print("    {:<22}  {:>4}  {:>11.4g}  {:>5}  ({:>9.2f})  {:>13.5g}\n",
+                   sc.is_cb ? "carbon black" : "NCM622", type++, sc.diameter * 1e6, sc.count,
+                   sc.count_exact, sc.density * 1e-3);
+    fmt::print("  particles                 {}\n\n", r.particle_count());
+
+    fmt::print("Scaling (M-7): k = {:g}, b = {:g}, capillary x {:g}, Hamaker x {:g}\n", s.time_factor,
+               s.viscosity_reduction, s.capillary_factor, s.hamaker_factor);
+    fmt::print("  gravity                   {:g} -> {:g} m/s2\n", s.gravity_physical, s.gravity_scaled);
+    fmt::print("  Stokes viscosity          {:g} -> {:g} Pa s\n", s.drag_viscosity_physical, s.drag_viscosity_scaled);
+    fmt::print("  lubrication viscosity     {:g} Pa s\n", s.lubrication_viscosity);
+    fmt::print("  Hamaker CB-CB/NCM-CB/NCM-NCM  {:g} / {:g} / {:g} -> {:g} / {:g} / {:g} J\n",
+               s.hamaker_cb_cb[0], s.hamaker_ncm_cb[0], s.hamaker_ncm_ncm[0], s.hamaker_cb_cb[1],
+               s.hamaker_ncm_cb[1], s.hamaker_ncm_ncm[1]);
+    fmt::print("  surface tension x factor  {:g} -> {:g} N/m (capillary stiffness {:.4g} N/m)\n",
+               s.surface_tension_physical, s.surface_tension_scaled, capillary_stiffness(ff.capillary));
+    fmt::print("  dryer zone duration       {:g} s -> {:g} s\n", s.zone_duration_physical, s.zone_duration_scaled);
+    for (std::size_t z = 0; z < s.level_speeds_scaled.size(); ++z)
+        fmt::print("  zone {} shrinkage rate     {:g} um/s -> level speed {:g} m/s\n", z + 1,
+                   s.shrinkage_rates_physical[z] * 1e6, s.level_speeds_scaled[z]);
+
+    // Time-step limits for the smallest particle (M-9.2).
+    const SizeClass& cb = *std::min_element(r.species.begin(), r.species.end(),
+                                            [](const SizeClass& a, const SizeClass& b) { return a.diameter < b.diameter; });
+    const double rc = 0.5 * cb.diameter, m = cb.density * 4.0 / 3.0 * pi * rc * rc * rc;
+    const double e_cb = cb.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
+    const HertzMindlinParams& hm = ff.pair_params(r.cb_species(), r.cb_species()).contact;
+    const double eta = s.lubrication_viscosity, kc = c.kappa_c;
+    const double gamma_lub = 6 * pi * eta * rc * lubrication_x(kc) * vinogradova_factor(kc, kc);
+    const double gamma_t = pi * eta * rc * -std::log(kc);
+    const double gamma_w = 6 * pi * eta * rc * substrate_lubrication_x(kc) * vinogradova_factor(kc, kc);
+    const double gamma_wt = 6 * pi * eta * rc * (8.0 / 15.0 - 64.0 / 375.0 * kc) * -std::log(kc);
+    const double tr = rayleigh_time(rc, cb.density, e_cb, c.poisson_ratio);
+    fmt::print("\nTime step (M-9.2), smallest particle d = {:.3g} um, m = {:.4g} kg\n", cb.diameter * 1e6, m);
+    fmt::print("  time step                 {:.3g} s (scaled)\n", c.time_step);
+    fmt::print("  Rayleigh time             {:.3g} s (0.2 T_R = {:.3g} s)\n", tr, 0.2 * tr);
+    fmt::print("  Hertz contact time        {:.3g} s at 1 m/s, {:.3g} s at the level speed\n",
+               hertz_contact_time(m / 2, rc / 2, hm.e_star, 1.0),
+               hertz_contact_time(m / 2, rc / 2, hm.e_star, s.level_speeds_scaled.front()));
+    fmt::print("  Stokes drag (scaled)      2 m/(6 pi eta r) = {:.3g} s\n",
+               2 * stokes_relaxation_time(m, rc, s.drag_viscosity_scaled));
+    if (c.lubrication) {
+        fmt::print("  pair lubrication (frozen) m/gamma = {:.3g} s (gamma = {:.4g} kg/s)\n", m / gamma_lub, gamma_lub);
+        fmt::print("  substrate lubrication     2m/gamma = {:.3g} s\n", 2 * m / gamma_w);
+    }
+    fmt::print("  capillary spring period   {:.3g} s\n",
+               capillary_stiffness(ff.capillary) > 0 ? 2 * pi * std::sqrt(m / capillary_stiffness(ff.capillary)) : INFINITY);
+    // Worst plausible case of the run-time guard: on the substrate with three equal neighbours at κ_c.
+    const double lambda = (3 * 2 * std::max(gamma_lub, 3.5 * gamma_t) + std::max(gamma_w, 3.5 * gamma_wt) +
+                           6 * pi * s.drag_viscosity_scaled * rc) / m;
+    fmt::print("  damping guard, worst case dt*Lambda = {:.3g} (stable < 2; evaluated on the real "
+               "packing at every neighbor rebuild)\n", c.time_step * lambda);
+
+    // Cost estimate (M-8.3): level travel to an uncalendered density of about 2.4 g/cm3.
+    const double gap = c.final_gap > 0 ? c.final_gap : r.largest_diameter();
+    const double h_final = c.areal_loading / 2400.0;
+    const double travel = std::max(0.0, r.wet_film_height - h_final + gap);
+    double t_sim = 0, left = travel;
+    for (std::size_t z = 0; z < s.level_speeds_scaled.size() && left > 0; ++z) {
+        const bool last = z + 1 == s.level_speeds_scaled.size();
+        const double dz = last ? left : std::min(left, s.level_speeds_scaled[z] * s.zone_duration_scaled);
+        t_sim += dz / s.level_speeds_scaled[z];
+        left -= dz;
+    }
+    t_sim += s.sim_time(c.relaxation);
+    const double steps = t_sim / c.time_step;
+    fmt::print("\nCost estimate (M-8.3)\n");
+    fmt::print("  final thickness (~2.4 g/cm3) {:.4g} um, level travel {:.4g} um\n", h_final * 1e6, travel * 1e6);
+    fmt::print("  simulated time            {:.3g} s ({:.3g} s process, incl. {:g} s relaxation)\n",
+               t_sim, s.process_time(t_sim), c.relaxation);
+    fmt::print("  steps                     {:.3g}\n", steps);
+    fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
+    fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers)\n",
+               r.particle_count() * (13 * 24.0 + 6 * 8 + 20 * 40) / 1e6 + 5);
+}
+
+} // namespace drydem::app

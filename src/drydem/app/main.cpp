@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// `drydem` command line (interface.md): run, check, config, bench. Exit codes: 0 success,
+// 1 run failure, 2 bad input.
+#include "drydem/app/commands.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/drying/drying_run.hpp"
+#include <CLI/CLI.hpp>
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+using namespace drydem;
+
+namespace {
+
+Config load(const std::string& file, const std::vector<std::string>& sets) {
+    return file.empty() ? load_config(default_config_toml(), "<embedded default>", sets)
+                        : load_config_file(file, sets);
+}
+
+std::string default_output_dir(const Config& c) {
+    const auto now = std::chrono::system_clock::now();
+    return fmt::format("out/{}-{:%Y%m%d-%H%M%S}", c.name, fmt::localtime(std::chrono::system_clock::to_time_t(now)));
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App cli{"DryDEM: DEM simulation of structure formation during electrode drying "
+                 "(Lippke et al., Energy Technol. 2022)"};
+    cli.require_subcommand(0, 1);
+    cli.set_version_flag("--version", fmt::format("drydem {} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH));
+
+    std::string config_file, out_dir, particles;
+    std::vector<std::string> sets;
+    std::int64_t seed = -1;
+    int threads = -1;
+    bool quiet = false, no_plots = false;
+
+    auto* run = cli.add_subcommand("run", "run the drying simulation (no CONFIG: the paper's 20.1 mg/cm2 case)");
+    run->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
+    run->add_option("-o,--output", out_dir, "output folder (default out/<name>-<timestamp>)");
+    run->add_option("--set", sets, "override a key, e.g. --set run.seed=7")->take_all();
+    run->add_option("--seed", seed, "random seed (= --set run.seed=N)");
+    run->add_option("--threads", threads, "OpenMP threads (= --set run.threads=N)");
+    run->add_option("--particles", particles, "start from these particles (CSV, LAMMPS data or dump)")
+        ->check(CLI::ExistingFile);
+    run->add_flag("--quiet", quiet, "only warnings and errors on the console");
+    run->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+
+    auto* check = cli.add_subcommand("check", "validate a configuration and print every derived quantity");
+    check->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
+    check->add_option("--set", sets, "override a key")->take_all();
+
+    auto* config = cli.add_subcommand("config", "print a configuration");
+    std::string which;
+    config->add_option("which", which, "'default': the embedded default configuration")
+        ->required()->check(CLI::IsMember({"default"}));
+
+    app::BenchOptions bench_opt;
+    auto* bench = cli.add_subcommand("bench", "the peers' granular benchmark (../shared/peers) in DryDEM");
+    bench->add_option("data", bench_opt.data, "settled bed (LAMMPS data or CSV)")->required()->check(CLI::ExistingFile);
+    bench->add_option("--steps", bench_opt.steps, "timed steps");
+    bench->add_option("--warmup", bench_opt.warmup, "untimed warm-up steps");
+    bench->add_option("--threads", bench_opt.threads, "OpenMP threads");
+
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = cli.exit(e);
+        return code == 0 ? 0 : 2;
+    }
+    try {
+        if (seed >= 0) sets.push_back(fmt::format("run.seed={}", seed));
+        if (threads >= 0) sets.push_back(fmt::format("run.threads={}", threads));
+        if (*config) {
+            std::cout << default_config_toml();
+            return 0;
+        }
+        if (*bench) return app::run_bench(bench_opt);
+        if (*check) {
+            app::print_check(load(config_file, sets));
+            return 0;
+        }
+        // `drydem` alone and `drydem run` both run the main job.
+        const Config c = load(config_file, sets);
+        RunOptions o;
+        o.output_dir = out_dir.empty() ? default_output_dir(c) : out_dir;
+        if (!particles.empty()) o.particles_file = particles;
+        o.quiet = quiet;
+        o.plots = !no_plots;
+        const DryingResult r = run_drying(c, o);
+        return r.completed ? 0 : 1;
+    } catch (const InputError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// Particle store: structure of arrays, SI units, double precision. Identity (id) is separate from
+// storage position, so particles can be re-sorted for memory locality while contact history,
+// output and restarts stay keyed by id (architecture.md, "Principles").
+#pragma once
+#include "drydem/core/vec3.hpp"
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+namespace drydem {
+
+struct ParticleStore {
+    std::vector<std::uint32_t> id;      ///< global, stable particle id
+    std::vector<std::uint8_t> species;  ///< index into the species table
+    std::vector<double> radius;         ///< [m]
+    std::vector<double> density;        ///< particle density [kg/m^3] (CB: carbon + pore NMP, M-1.3)
+    std::vector<double> mass;           ///< [kg]
+    std::vector<double> inv_mass;       ///< [1/kg]
+    std::vector<double> inv_inertia;    ///< 1/I with I = (2/5) m r^2 [1/(kg m^2)]
+    std::vector<Vec3> position;         ///< [m], x and y wrapped into the box
+    std::vector<Vec3> velocity;         ///< [m/s]
+    std::vector<Vec3> omega;            ///< angular velocity [rad/s]
+    std::vector<Vec3> force;            ///< [N]
+    std::vector<Vec3> torque;           ///< [N m]
+    std::vector<Vec3> wall_history;     ///< tangential spring of the substrate contact [m] (M-2.3)
+
+    [[nodiscard]] std::size_t size() const { return id.size(); }
+
+    /// Appends a sphere at rest; mass and inertia follow from radius and density.
+    void add(std::uint32_t pid, std::uint8_t sp, double r, double rho, const Vec3& x) {
+        const double m = rho * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        id.push_back(pid);
+        species.push_back(sp);
+        radius.push_back(r);
+        density.push_back(rho);
+        mass.push_back(m);
+        inv_mass.push_back(1.0 / m);
+        inv_inertia.push_back(1.0 / (0.4 * m * r * r));
+        position.push_back(x);
+        velocity.push_back({});
+        omega.push_back({});
+        force.push_back({});
+        torque.push_back({});
+        wall_history.push_back({});
+    }
+
+    /// Reorders every per-particle array so that new index k holds old index order[k].
+    void permute(const std::vector<std::uint32_t>& order);
+};
+
+} // namespace drydem

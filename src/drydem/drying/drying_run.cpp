@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/drying/drying_run.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/drying/liquid_level.hpp"
+#include "drydem/drying/scaling.hpp"
+#include "drydem/engine/simulation.hpp"
+#include "drydem/io/particle_io.hpp"
+#include "drydem/io/snapshot_writers.hpp"
+#include "drydem/setup/formulation.hpp"
+#include "drydem/setup/insertion.hpp"
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+#include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+namespace drydem {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::shared_ptr<spdlog::logger> make_logger(const std::filesystem::path& dir, bool quiet) {
+    auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "log.txt").string(), true);
+    auto console = std::make_shared<spdlog::sinks::stderr_color_sink_mt>();
+    console->set_level(quiet ? spdlog::level::warn : spdlog::level::info);
+    console->set_pattern("%v");
+    file->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");
+    auto log = std::make_shared<spdlog::logger>("drydem", spdlog::sinks_init_list{console, file});
+    log->set_level(spdlog::level::debug);
+    log->flush_on(spdlog::level::info);
+    return log;
+}
+
+/// 99th percentile of the particle tops z + r: a robust thickness that ignores stray particles.
+double top_percentile(const ParticleStore& p, double q) {
+    std::vector<double> tops(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) tops[i] = p.position[i].z + p.radius[i];
+    if (tops.empty()) return 0.0;
+    const std::size_t k = std::min(tops.size() - 1, std::size_t(q * double(tops.size())));
+    std::nth_element(tops.begin(), tops.begin() + std::ptrdiff_t(k), tops.end());
+    return tops[k];
+}
+
+std::size_t particles_cutting_level(const ParticleStore& p, double level) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) n += std::abs(level - p.position[i].z) < p.radius[i];
+    return n;
+}
+
+/// Particles from a file: species by type (type = species + 1), density from the recipe where the
+/// file has none.
+ParticleStore particles_from_file(const std::filesystem::path& file, const FilmRecipe& recipe,
+                                  const Box& box) {
+    const ParticleFile in = read_particles(file);
+    ParticleStore p;
+    for (const ParticleRecord& r : in.particles) {
+        if (r.type < 1 || r.type > int(recipe.species.size()))
+            throw InputError(fmt::format("--particles {}: particle {} has type {}; the config "
+                                         "defines types 1..{} (NCM classes, then CB)",
+                                         file.string(), r.id, r.type, recipe.species.size()));
+        const int sp = r.type - 1;
+        const double rho = std::isnan(r.density) ? recipe.species[sp].density : r.density;
+        Vec3 x = r.position;
+        x.x -= in.xlo.value_or(0.0);
+        x.y -= in.ylo.value_or(0.0);
+        box.wrap(x);
+        p.add(r.id, std::uint8_t(sp), r.radius, rho, x);
+    }
+    return p;
+}
+
+} // namespace
+
+DryingResult run_drying(const Config& c, const RunOptions& opt) {
+    namespace fs = std::filesystem;
+    const auto wall_start = Clock::now();
+    fs::create_directories(opt.output_dir / "snapshots");
+    auto log = make_logger(opt.output_dir, opt.quiet);
+    {
+        std::ofstream cfg(opt.output_dir / "config.toml");
+        cfg << to_toml(c);
+    }
+
+    // --- set-up (M-1) and scaling (M-7) ---
+    const FilmRecipe recipe = make_recipe(c);
+    const ScaledParameters scaled = scale_parameters(c);
+    const Box box{c.box_x, c.box_y};
+    ParticleStore particles = opt.particles_file
+                                  ? particles_from_file(*opt.particles_file, recipe, box)
+                                  : insert_particles(recipe, box, recipe.wet_film_height, c.seed);
+    std::size_t n_ncm = 0, n_cb = 0;
+    for (std::uint8_t s : particles.species) (recipe.species[s].is_cb ? n_cb : n_ncm)++;
+    const double final_gap = c.final_gap > 0.0 ? c.final_gap : recipe.largest_diameter();
+    LiquidLevelSchedule schedule{recipe.wet_film_height, scaled.level_speeds_scaled,
+                                 scaled.zone_duration_scaled};
+    log->info("DryDEM {} ({}) run '{}': {} NCM + {} CB particles, box {:.4g} x {:.4g} um, "
+              "H_wet = {:.4g} um, seed {}",
+              DRYDEM_VERSION, DRYDEM_GIT_HASH, c.name, n_ncm, n_cb, c.box_x * 1e6, c.box_y * 1e6,
+              recipe.wet_film_height * 1e6, c.seed);
+
+    EngineSettings es;
+    es.dt = c.time_step;
+    es.skin = c.skin;
+    es.threads = c.threads;
+    es.sort_every = c.sort_every;
+    es.overlap_limit = c.overlap_limit;
+    Simulation sim(std::move(particles), box, make_drying_force_field(c, recipe, scaled), es);
+    sim.set_liquid_level(schedule.level(0.0));
+    sim.set_liquid_level_schedule([schedule](double t) { return schedule.level(t); });
+    sim.compute_forces();
+
+    // --- stability guard (M-9.2) ---
+    auto guard = [&](bool at_start) {
+        const auto b = sim.damping_bound();
+        if (b.dt_lambda >= 2.0) {
+            const std::string msg = fmt::format(
+                "time step {:.3g} s is above the explicit stability bound of the damping forces: "
+                "dt*Lambda = {:.3g} >= 2 at particle {} (model.md M-9.2); lower run.time_step",
+                c.time_step, b.dt_lambda, b.particle_id);
+            if (c.stability_guard == "refuse") {
+                if (at_start) throw InputError(msg);
+                throw RunError(msg);
+            }
+            log->warn("{}", msg);
+        } else if (b.dt_lambda > 1.5) {
+            log->warn("time step {:.3g} s is close to the damping stability bound: dt*Lambda = "
+                      "{:.3g} at particle {}", c.time_step, b.dt_lambda, b.particle_id);
+        }
+        return b.dt_lambda;
+    };
+    double dt_lambda = guard(true);
+    log->info("threads {}, dt = {:.3g} s (scaled), dt*Lambda = {:.3g} (stable < 2), level speeds "
+              "{} m/s (scaled)", sim.threads(), c.time_step, dt_lambda,
+              fmt::join(scaled.level_speeds_scaled, ", "));
+
+    // --- outputs ---
+    CsvSeriesWriter series(opt.output_dir / "timeseries.csv",
+                           {"process_time_s", "sim_time_s", "step", "liquid_level_um",
+                            "film_thickness_um", "film_top_p99_um", "kinetic_energy_J", "contacts",
+                            "wall_contacts", "max_overlap_rel", "particles_at_level",
+                            "dt_lambda", "zone"});
+    PvdWriter pvd(opt.output_dir / "snapshots" / "particles.pvd");
+    std::ofstream dump(opt.output_dir / "snapshots" / "dump.lammpstrj");
+    int frame = 0;
+    auto snapshot = [&]() {
+        const std::string name = fmt::format("frame_{:05d}.vtp", frame++);
+        const double tp = scaled.process_time(sim.time());
+        write_vtp(opt.output_dir / "snapshots" / name, sim.particles(), sim.time(), tp);
+        pvd.add(tp, name);
+        append_lammps_dump(dump, sim.particles(), box, sim.step_count(), sim.stats().layer_top);
+        dump.flush();
+    };
+    auto row = [&]() {
+        const auto& st = sim.stats();
+        const double values[] = {scaled.process_time(sim.time()),
+                                 sim.time(),
+                                 double(sim.step_count()),
+                                 sim.liquid_level() * 1e6,
+                                 st.layer_top * 1e6,
+                                 top_percentile(sim.particles(), 0.99) * 1e6,
+                                 sim.kinetic_energy(),
+                                 double(st.contacts),
+                                 double(st.wall_contacts),
+                                 st.max_overlap_rel,
+                                 double(particles_cutting_level(sim.particles(), sim.liquid_level())),
+                                 dt_lambda,
+                                 double(schedule.zone(sim.time()) + 1)};
+        series.row(values);
+    };
+
+    DryingResult result;
+    nlohmann::json summary;
+    bool final_found = false, warned_c21 = false;
+    double t_end = INFINITY;
+    const double t_max = scaled.sim_time(c.max_process_time);
+    double next_row = 0.0, next_snapshot = 0.0;
+    std::uint64_t builds_seen = sim.neighbors().builds();
+    auto last_progress = Clock::now();
+    const double speed_last = scaled.level_speeds_scaled.back();
+    try {
+        row();
+        snapshot();
+        next_row = scaled.sim_time(c.timeseries_every);
+        next_snapshot = c.snapshot_every > 0 ? scaled.sim_time(c.snapshot_every) : INFINITY;
+        while (true) {
+            sim.step();
+            const double t = sim.time(), level = sim.liquid_level(), top = sim.stats().layer_top;
+            // M-8.2: the final thickness is reached once the layer no longer follows the level.
+            if (!final_found && (top - level > final_gap || level <= 0.0)) {
+                final_found = true;
+                result.final_thickness = top;
+                result.process_time_final = scaled.process_time(t);
+                t_end = t + scaled.sim_time(c.relaxation);
+                if (level <= 0.0)
+                    log->warn("the liquid level reached the substrate before the layer top rose "
+                              "{:.4g} um above it; final thickness taken there", final_gap * 1e6);
+                log->info("final thickness {:.4f} um at process time {:.3f} s; relaxing for {} s",
+                          top * 1e6, result.process_time_final, c.relaxation);
+            }
+            if (sim.neighbors().builds() != builds_seen) {
+                builds_seen = sim.neighbors().builds();
+                dt_lambda = guard(false);
+            }
+            if (!warned_c21 && int(t / scaled.zone_duration_scaled) >= int(scaled.level_speeds_scaled.size())) {
+                warned_c21 = true;
+                log->warn("the film is still shrinking after the last dryer zone ({:.4g} s); its "
+                          "rate is kept (model.md C-21)", scaled.process_time(t));
+            }
+            const bool done = t >= t_end;
+            const bool timeout = t >= t_max;
+            if (t >= next_row || done || timeout) {
+                row();
+                next_row += scaled.sim_time(c.timeseries_every);
+            }
+            if (t >= next_snapshot) {
+                snapshot();
+                next_snapshot += scaled.sim_time(c.snapshot_every);
+            }
+            if (done) break;
+            if (timeout)
+                throw RunError(fmt::format("no final thickness within run.max_process_time = {} s "
+                                           "(layer top {:.4g} um, level {:.4g} um)",
+                                           c.max_process_time, top * 1e6, level * 1e6));
+            const auto now = Clock::now();
+            if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_every) {
+                last_progress = now;
+                // ETA: remaining simulated time to the end criterion (level travel) or window end.
+                const double remaining = final_found ? t_end - t
+                                                     : std::max(0.0, (level - (top - final_gap))) / speed_last +
+                                                           scaled.sim_time(c.relaxation);
+                const double elapsed = std::chrono::duration<double>(now - wall_start).count();
+                const double eta = elapsed / std::max(t, 1e-30) * remaining;
+                log->info("step {:>9}  t = {:8.3f} s ({:.4g} us sim)  level {:7.3f} um  top {:7.3f} um  "
+                          "contacts {:>7}  {:.3g} particle-steps/s  ETA {:.0f} s",
+                          sim.step_count(), scaled.process_time(t), t * 1e6, level * 1e6, top * 1e6,
+                          sim.stats().contacts,
+                          double(sim.particles().size()) * double(sim.step_count()) / elapsed, eta);
+            }
+        }
+        result.completed = true;
+        result.relaxed_thickness = sim.stats().layer_top;
+    } catch (const RunError& e) {
+        result.completed = false;
+        result.error = e.what();
+        log->error("run failed: {}", e.what());
+    }
+
+    // --- results (also after a failure: keep what the run reached) ---
+    result.steps = sim.step_count();
+    result.wall_time = std::chrono::duration<double>(Clock::now() - wall_start).count();
+    const double areal_mass = recipe.realised_dry_mass() / recipe.base_area;
+    if (final_found) {
+        const CoatingDensity d = coating_density(areal_mass, result.final_thickness, recipe.solids_density);
+        result.density = d.density;
+        result.porosity = d.porosity;
+    }
+    try {
+        snapshot();
+        write_particles_csv(opt.output_dir / "final.csv", sim.particles());
+    } catch (const std::exception& e) {
+        log->error("could not write the final particles: {}", e.what());
+    }
+    summary["status"] = result.completed ? "completed" : "failed";
+    if (!result.completed) summary["error"] = result.error;
+    summary["name"] = c.name;
+    summary["final_thickness_um"] = final_found ? nlohmann::json(result.final_thickness * 1e6) : nlohmann::json(nullptr);
+    summary["final_thickness_relaxed_um"] = result.completed ? nlohmann::json(result.relaxed_thickness * 1e6) : nlohmann::json(nullptr);
+    summary["film_top_p99_um"] = top_percentile(sim.particles(), 0.99) * 1e6;
+    summary["density_g_cm3"] = final_found ? nlohmann::json(result.density * 1e-3) : nlohmann::json(nullptr);
+    summary["porosity"] = final_found ? nlohmann::json(result.porosity) : nlohmann::json(nullptr);
+    summary["areal_loading_mg_cm2"] = areal_mass * 100.0;
+    summary["areal_loading_nominal_mg_cm2"] = c.areal_loading * 100.0;
+    summary["wet_film_height_um"] = recipe.wet_film_height * 1e6;
+    summary["solids_density_g_cm3"] = recipe.solids_density * 1e-3;
+    summary["process_time_final_s"] = final_found ? nlohmann::json(result.process_time_final) : nlohmann::json(nullptr);
+    summary["process_time_end_s"] = scaled.process_time(sim.time());
+    summary["final_gap_um"] = final_gap * 1e6;
+    summary["particles"] = {{"ncm", n_ncm}, {"cb", n_cb}};
+    summary["box_um"] = {c.box_x * 1e6, c.box_y * 1e6};
+    summary["scaling"] = to_json(scaled);
+    summary["time_step_s"] = c.time_step;
+    summary["steps"] = result.steps;
+    summary["seed"] = c.seed;
+    summary["threads"] = sim.threads();
+    summary["version"] = fmt::format("{} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH);
+    summary["wall_time_s"] = result.wall_time;
+    summary["particle_steps_per_s"] =
+        double(sim.particles().size()) * double(result.steps) / std::max(result.wall_time, 1e-9);
+    summary["config"] = "config.toml";
+    write_file_atomically(opt.output_dir / "summary.json", [&](std::ostream& o) { o << summary.dump(2) << "\n"; });
+    if (result.completed)
+        log->info("done: final thickness {:.3f} um, density {:.4f} g/cm3, porosity {:.4f}; {} steps "
+                  "in {:.1f} s ({:.3g} particle-steps/s); results in {}",
+                  result.final_thickness * 1e6, result.density * 1e-3, result.porosity, result.steps,
+                  result.wall_time, summary["particle_steps_per_s"].get<double>(), opt.output_dir.string());
+
+    if (opt.plots) {
+        const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "plot_run.py";
+        if (fs::exists("/usr/bin/python3") && fs::exists(script)) {
+            const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' >> '{}' 2>&1", script.string(),
+                                                opt.output_dir.string(), (opt.output_dir / "log.txt").string());
+            if (std::system(cmd.c_str()) != 0) log->warn("plotting failed (see log.txt)");
+        }
+    }
+    log->flush();
+    return result;
+}
+
+} // namespace drydem

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The drying simulation (paper Sec. 4 and 8, model.md M-8): set-up from the formulation, the
+// descending liquid level, final-thickness detection with a relaxation window, and the outputs of
+// interface.md (summary.json, timeseries.csv, snapshots, final particles, log, plots).
+#pragma once
+#include "drydem/io/config.hpp"
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace drydem {
+
+struct RunOptions {
+    std::filesystem::path output_dir;
+    std::optional<std::filesystem::path> particles_file; ///< start from these instead of insertion
+    bool quiet = false;
+    bool plots = true; ///< run scripts/plot_run.py with Debian's python3 at the end
+};
+
+/// Outcome of a drying run (also written to summary.json).
+struct DryingResult {
+    bool completed = false;
+    std::string error;
+    double final_thickness = 0.0;        ///< H_final at t* [m] (M-8.2)
+    double relaxed_thickness = 0.0;      ///< H_layer at the end of the relaxation window [m]
+    double density = 0.0;                ///< [kg/m^3]
+    double porosity = 0.0;
+    double process_time_final = 0.0;     ///< t* [s physical]
+    std::int64_t steps = 0;
+    double wall_time = 0.0;              ///< [s]
+};
+
+/// Runs the drying simulation; writes every output into options.output_dir. Throws InputError for
+/// bad input detected before the run (exit code 2); a run that fails (blow-up, I/O) returns a
+/// result with completed = false after writing what it has (exit code 1).
+DryingResult run_drying(const Config& config, const RunOptions& options);
+
+} // namespace drydem

@@ -1,0 +1,276 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/engine/simulation.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <omp.h>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace drydem {
+
+Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings)
+    : p_(std::move(particles)), box_(box), ff_(std::move(forces)), settings_(settings),
+      nl_(settings.skin) {
+    threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
+    thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
+    thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
+    for (std::size_t i = 0; i < p_.size(); ++i) box_.wrap(p_.position[i]);
+    compute_forces();
+}
+
+void Simulation::rebuild_neighbors() {
+    const bool sort = settings_.sort_every > 0 &&
+                      (nl_.builds() == 0 || ++rebuilds_since_sort_ >= std::uint64_t(settings_.sort_every));
+    if (sort) rebuilds_since_sort_ = 0;
+    // Upper bound of the range an owner can have: partners are never larger than the owner.
+    auto owner_range = [&](std::size_t i) {
+        double r = 0.0;
+        const int si = p_.species[i];
+        for (int sj = 0; sj < ff_.species_count; ++sj)
+            r = std::max(r, interaction_range(ff_.pair_params(si, sj), p_.radius[i], p_.radius[i]));
+        return r;
+    };
+    auto range = [&](std::size_t i, std::size_t j) {
+        return interaction_range(ff_.pair_params(p_.species[i], p_.species[j]), p_.radius[i],
+                                 p_.radius[j]);
+    };
+    nl_.build(p_, box_, range, owner_range, sort);
+    force_rebuild_ = false;
+}
+
+void Simulation::compute_forces() {
+    if (force_rebuild_) rebuild_neighbors();
+    const std::size_t n = p_.size();
+    const double dt = settings_.dt;
+    const double level = liquid_level_;
+    std::size_t contacts = 0, wall_contacts = 0;
+    double max_overlap = 0.0;
+    ParticleStore& p = p_;
+    const int species_count = ff_.species_count;
+    const PairParams* pair_table = ff_.pair.data();
+
+#pragma omp parallel num_threads(threads_) reduction(+ : contacts, wall_contacts) reduction(max : max_overlap)
+    {
+        const int t = omp_get_thread_num();
+        Vec3* force = t == 0 ? p.force.data() : thread_force_[t - 1].data();
+        Vec3* torque = t == 0 ? p.torque.data() : thread_torque_[t - 1].data();
+        if (t > 0) {
+            std::fill(force, force + n, Vec3{});
+            std::fill(torque, torque + n, Vec3{});
+        }
+        // Particle forces first (each particle written by one thread), then the pair loop.
+#pragma omp for schedule(static)
+        for (std::size_t i = 0; i < n; ++i) {
+            const BodyForce b =
+                particle_forces(ff_, p.species[i], p.radius[i], p.density[i], p.mass[i],
+                                p.position[i], p.velocity[i], p.omega[i], level, p.wall_history[i], dt);
+            p.force[i] = b.force;
+            p.torque[i] = b.torque;
+            if (p.position[i].z < p.radius[i] && ff_.substrate_on) {
+                ++wall_contacts;
+                max_overlap = std::max(max_overlap, 1.0 - p.position[i].z / p.radius[i]);
+            }
+        }
+#pragma omp for schedule(static)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec3 xi = p.position[i];
+            const double ri = p.radius[i];
+            const int si = p.species[i];
+            const PairParams* row = pair_table + std::size_t(si) * species_count;
+            Vec3 fi{}, ti{};
+            for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
+                const std::uint32_t j = nl_.partner(s);
+                const Vec3 d = box_.minimum_image(xi, p.position[j]);
+                const double rj = p.radius[j];
+                const double dist2 = norm2(d);
+                const PairParams& pp = row[p.species[j]];
+                const double reach = ri + rj + interaction_range(pp, ri, rj);
+                Vec3& hist = nl_.history(s);
+                if (dist2 >= reach * reach && dist2 >= (ri + rj) * (ri + rj)) {
+                    hist = Vec3{};
+                    continue;
+                }
+                const double dist = std::sqrt(dist2);
+                const PairGeometry g =
+                    make_pair_geometry(d, dist, ri, rj, p.mass[i], p.mass[j], p.velocity[i],
+                                       p.velocity[j], p.omega[i], p.omega[j]);
+                if (g.gap < 0.0) {
+                    ++contacts;
+                    max_overlap = std::max(max_overlap, -g.gap / std::min(ri, rj));
+                }
+                const PairForce f = pair_interaction(g, pp, hist, dt);
+                fi += f.force_i;
+                ti += f.torque_i;
+                force[j] -= f.force_i;
+                torque[j] += f.torque_j;
+            }
+            force[i] += fi;
+            torque[i] += ti;
+        }
+        // Fixed-order reduction of the thread buffers.
+        if (threads_ > 1) {
+#pragma omp for schedule(static)
+            for (std::size_t i = 0; i < n; ++i)
+                for (int k = 0; k < threads_ - 1; ++k) {
+                    p.force[i] += thread_force_[k][i];
+                    p.torque[i] += thread_torque_[k][i];
+                }
+        }
+    }
+    stats_.contacts = contacts;
+    stats_.wall_contacts = wall_contacts;
+    stats_.max_overlap_rel = max_overlap;
+}
+
+void Simulation::step() {
+    const std::size_t n = p_.size();
+    const double dt = settings_.dt, half = 0.5 * dt;
+    ParticleStore& p = p_;
+    const auto& x_build = nl_.positions_at_build();
+    double max_disp2 = 0.0;
+    // M-9.1 steps 1-2: half kick, drift, wrap; track the largest displacement since the build.
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_disp2)
+    for (std::size_t i = 0; i < n; ++i) {
+        p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
+        p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
+        p.position[i] += dt * p.velocity[i];
+        box_.wrap(p.position[i]);
+        max_disp2 = std::max(max_disp2, norm2(box_.minimum_image(x_build[i], p.position[i])));
+    }
+    time_ += dt;
+    ++step_;
+    // Step 3: liquid level at the new time, neighbor list check.
+    if (level_at_) liquid_level_ = level_at_(time_);
+    if (!std::isfinite(max_disp2)) non_finite_ = true;
+    if (non_finite_) check_health();
+    if (nl_.needs_rebuild(max_disp2)) force_rebuild_ = true;
+    // Step 4: forces at the new positions with the half-step velocities.
+    compute_forces();
+    // Step 5: second half kick; layer top for the end criterion (M-8.2).
+    double top = -INFINITY;
+    bool finite = true;
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : top) reduction(&& : finite)
+    for (std::size_t i = 0; i < n; ++i) {
+        p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
+        p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
+        top = std::max(top, p.position[i].z + p.radius[i]);
+        finite = finite && is_finite(p.velocity[i]) && is_finite(p.omega[i]);
+    }
+    stats_.layer_top = top;
+    non_finite_ = !finite;
+    if (non_finite_ || stats_.max_overlap_rel > settings_.overlap_limit) check_health();
+}
+
+void Simulation::check_health() {
+    const ParticleStore& p = p_;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!is_finite(p.position[i]) || !is_finite(p.velocity[i]) || !is_finite(p.omega[i]) ||
+            !is_finite(p.force[i]))
+            throw RunError(fmt::format(
+                "blow-up at step {} (t = {:.6g} s): particle {} (species {}, r = {:.4g} um) has a "
+                "non-finite state: position ({:.4g}, {:.4g}, {:.4g}) um, velocity ({:.4g}, {:.4g}, "
+                "{:.4g}) m/s, force ({:.4g}, {:.4g}, {:.4g}) N. Likely cause: time step {:.3g} s "
+                "too large for the stiffest force (see `drydem check`)",
+                step_, time_, p.id[i], int(p.species[i]), p.radius[i] * 1e6, p.position[i].x * 1e6,
+                p.position[i].y * 1e6, p.position[i].z * 1e6, p.velocity[i].x, p.velocity[i].y,
+                p.velocity[i].z, p.force[i].x, p.force[i].y, p.force[i].z, settings_.dt));
+    }
+    if (stats_.max_overlap_rel <= settings_.overlap_limit) return;
+    // Runaway overlap: find the worst pair (or wall contact) and name it.
+    double worst = 0.0;
+    std::string what;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (ff_.substrate_on && p.position[i].z < p.radius[i]) {
+            const double rel = 1.0 - p.position[i].z / p.radius[i];
+            if (rel > worst) {
+                worst = rel;
+                what = fmt::format("particle {} (r = {:.4g} um) with the substrate", p.id[i],
+                                   p.radius[i] * 1e6);
+            }
+        }
+        for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
+            const std::uint32_t j = nl_.partner(s);
+            const double gap = norm(box_.minimum_image(p.position[i], p.position[j])) -
+                               p.radius[i] - p.radius[j];
+            const double rel = -gap / std::min(p.radius[i], p.radius[j]);
+            if (rel > worst) {
+                worst = rel;
+                what = fmt::format("particles {} (r = {:.4g} um) and {} (r = {:.4g} um)", p.id[i],
+                                   p.radius[i] * 1e6, p.id[j], p.radius[j] * 1e6);
+            }
+        }
+    }
+    throw RunError(fmt::format(
+        "runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller radius "
+        "(limit {:.3g}). Likely causes: attractive or capillary forces too strong for the contact "
+        "stiffness, or a time step too large (see `drydem check`)",
+        step_, time_, what, worst, settings_.overlap_limit));
+}
+
+double Simulation::kinetic_energy() const {
+    double e = 0.0;
+    for (std::size_t i = 0; i < p_.size(); ++i)
+        e += 0.5 * p_.mass[i] * norm2(p_.velocity[i]) +
+             0.5 / p_.inv_inertia[i] * norm2(p_.omega[i]);
+    return e;
+}
+
+Vec3 Simulation::momentum() const {
+    Vec3 m{};
+    for (std::size_t i = 0; i < p_.size(); ++i) m += p_.mass[i] * p_.velocity[i];
+    return m;
+}
+
+} // namespace drydem
+
+namespace drydem {
+
+Simulation::DampingBound Simulation::damping_bound() const {
+    // M-9.2: Gershgorin bound on the explicit damping modes, Λ_i = Σ_j (1/m_i + 1/m_j)
+    // max(γ_n, 3.5 γ_t) + (substrate + Stokes terms)/m_i, with the current lubrication
+    // coefficients (3.5 = 1 + r² m / I: the sliding mode includes rotation).
+    const ParticleStore& p = p_;
+    const std::size_t n = p.size();
+    std::vector<double> lambda(n, 0.0);
+    constexpr double pi = std::numbers::pi;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double r = p.radius[i];
+        double own = stokes_drag_coefficient(r, ff_.drag);
+        const SubstrateLubricationParams& w = ff_.substrate_lubrication;
+        if (ff_.substrate_on && w.viscosity > 0.0 && p.position[i].z - r <= r) {
+            const double k_e = std::max((p.position[i].z - r) / r, w.kappa_c);
+            const double l = -std::log(k_e);
+            const double g_n = 6 * pi * w.viscosity * r * substrate_lubrication_x(k_e) *
+                               vinogradova_factor(k_e, w.kappa_c);
+            const double g_t = 6 * pi * w.viscosity * r * ((8.0 / 15.0) * l + (64.0 / 375.0) * k_e * l);
+            own += std::max(g_n, 3.5 * g_t);
+        }
+        lambda[i] += own * p.inv_mass[i];
+        for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
+            const std::uint32_t j = nl_.partner(s);
+            const LubricationParams& lp = ff_.pair_params(p.species[i], p.species[j]).lubrication;
+            if (lp.viscosity <= 0.0) continue;
+            const double r_l = lubrication_radius(r, p.radius[j]);
+            const double gap =
+                norm(box_.minimum_image(p.position[i], p.position[j])) - r - p.radius[j];
+            if (gap > r_l) continue;
+            const double k_e = std::max(gap / r_l, lp.kappa_c);
+            const double g_n = 6 * pi * lp.viscosity * r_l * lubrication_x(k_e) *
+                               vinogradova_factor(k_e, lp.kappa_c);
+            const double g_t = pi * lp.viscosity * r_l * -std::log(k_e);
+            const double c = std::max(g_n, 3.5 * g_t) * (p.inv_mass[i] + p.inv_mass[j]);
+            lambda[i] += c;
+            lambda[j] += c;
+        }
+    }
+    DampingBound out;
+    for (std::size_t i = 0; i < n; ++i)
+        if (lambda[i] * settings_.dt > out.dt_lambda) {
+            out.dt_lambda = lambda[i] * settings_.dt;
+            out.particle_id = p.id[i];
+        }
+    return out;
+}
+
+} // namespace drydem

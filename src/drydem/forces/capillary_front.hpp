@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Capillary force of the descending liquid surface on a particle that pierces it: model.md M-6,
+// paper Eq. 11-12 (Breinlinger & Kraft 2014), with the radius restored (I-1) and the sign of h_s
+// fixed (C-20 / I-2).
+//   h_s = z_L - z,  u = h_s / r,  cos ω = -u,  sin ω = sqrt(1 - u²)
+//   F = -2πσ s_cap r sin ω sin(ω + θ) ẑ = -2πσ s_cap r [(1 - u²) cos θ - u sqrt(1 - u²) sin θ] ẑ
+// for |h_s| < r, else 0. The force passes through the centre (no torque); it vanishes at u = cos θ
+// (floating equilibrium of a hydrophilic sphere) with spring stiffness 2πσ s_cap, and pulls
+// slightly upward for cos θ < u < 1 (I-8). σ is physical, s_cap = 9e3 is the scaling (M-7).
+#pragma once
+#include "drydem/core/vec3.hpp"
+#include <cmath>
+#include <numbers>
+
+namespace drydem {
+
+struct CapillaryParams {
+    double surface_tension = 0.0;                           ///< σ [N/m], physical (NMP 0.041)
+    double contact_angle = 40.0 * std::numbers::pi / 180.0; ///< θ [rad]
+    double scale = 0.0;                                     ///< s_cap (9e3); 0 = off
+};
+
+/// Stiffness of the force about its equilibrium, 2πσ s_cap [N/m] (2318 N/m scaled, M-6).
+inline double capillary_stiffness(const CapillaryParams& p) {
+    return 2.0 * std::numbers::pi * p.surface_tension * p.scale;
+}
+
+inline Vec3 capillary_front(double z, double r, double liquid_level, const CapillaryParams& p) {
+    const double u = (liquid_level - z) / r;
+    if (capillary_stiffness(p) == 0.0 || !(std::abs(u) < 1.0)) return {};
+    const double s2 = 1.0 - u * u; // sin² ω
+    const double shape =
+        s2 * std::cos(p.contact_angle) - u * std::sqrt(s2) * std::sin(p.contact_angle);
+    return {0.0, 0.0, -capillary_stiffness(p) * r * shape};
+}
+
+} // namespace drydem

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// Hertz-Mindlin (no slip) contact with tangential history, Coulomb limit and optional rolling
+// friction: model.md M-2 (EDEM "Hertz-Mindlin (no slip)", LIGGGHTS hertz + tangential history).
+//   S_n = 2 E* sqrt(R* δ),  S_t = 8 G* sqrt(R* δ)
+//   γ_n = 2 sqrt(5/6) β sqrt(S_n m*),  γ_t = 2 sqrt(5/6) β sqrt(S_t m*),  β = -ln e / sqrt(ln²e + π²)
+//   F_n,i = -[(4/3) E* sqrt(R*) δ^{3/2} + γ_n v_n] n            (M-2.2, not clipped)
+//   F_t = -S_t ξ - γ_t v_t, |F_t| ≤ μ_s |F_n|                  (M-2.3)
+#pragma once
+#include "drydem/forces/pair_geometry.hpp"
+#include <cmath>
+#include <numbers>
+
+namespace drydem {
+
+/// Pre-mixed contact parameters of one species pair (or species-substrate pair).
+struct HertzMindlinParams {
+    double e_star = 0.0;        ///< effective Young's modulus E* [Pa]
+    double g_star = 0.0;        ///< effective shear modulus G* [Pa]
+    double beta = 0.0;          ///< damping ratio from restitution, ≥ 0 (M-2.1)
+    double friction = 0.8;      ///< sliding friction μ_s
+    double rolling_friction = 0.0; ///< μ_r (C-7: off by default)
+};
+
+/// β = -ln e / sqrt(ln² e + π²) (M-2.1).
+inline double damping_ratio(double restitution) {
+    const double l = std::log(restitution);
+    return -l / std::sqrt(l * l + std::numbers::pi * std::numbers::pi);
+}
+
+/// E* and G* of two materials (M-2.1).
+inline HertzMindlinParams mix_hertz_mindlin(double e_i, double nu_i, double e_j, double nu_j,
+                                            double restitution, double friction,
+                                            double rolling_friction) {
+    HertzMindlinParams p;
+    p.e_star = 1.0 / ((1 - nu_i * nu_i) / e_i + (1 - nu_j * nu_j) / e_j);
+    p.g_star = 1.0 / (2 * (2 - nu_i) * (1 + nu_i) / e_i + 2 * (2 - nu_j) * (1 + nu_j) / e_j);
+    p.beta = damping_ratio(restitution);
+    p.friction = friction;
+    p.rolling_friction = rolling_friction;
+    return p;
+}
+
+/// Contact state of the shared law below: overlap δ > 0, lever arms from the centres to the
+/// contact point, R*, m*, normal n (from i toward the partner) and the kinematics.
+struct ContactKinematics {
+    Vec3 n;
+    double overlap;        ///< δ [m]
+    double r_eff, m_eff;   ///< R*, m*
+    double lever_i, lever_j; ///< c_i, c_j [m] (M-2.3; c_j = 0 for the substrate)
+    Vec3 v_rel;            ///< v_i - v_j
+    Vec3 omega_i, omega_j;
+};
+
+/// Output of the contact law: force on i, torques on i and j, |F_n| (for diagnostics).
+struct ContactForce {
+    Vec3 force_i;
+    Vec3 torque_i;
+    Vec3 torque_j;
+    double normal_force;
+};
+
+/// Evaluates the Hertz-Mindlin law and advances the tangential history `xi` by one step dt.
+inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const HertzMindlinParams& p,
+                                          Vec3& xi, double dt) {
+    const Vec3& n = k.n;
+    const double sqrt_rd = std::sqrt(k.r_eff * k.overlap);
+    const double s_n = 2.0 * p.e_star * sqrt_rd;
+    const double s_t = 8.0 * p.g_star * sqrt_rd;
+    constexpr double two_sqrt_5_6 = 1.8257418583505538; // 2 sqrt(5/6)
+    const double gamma_n = two_sqrt_5_6 * p.beta * std::sqrt(s_n * k.m_eff);
+    const double gamma_t = two_sqrt_5_6 * p.beta * std::sqrt(s_t * k.m_eff);
+
+    const double v_n = dot(k.v_rel, n);
+    // M-2.2: elastic (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ, plus viscous damping; not clipped.
+    const double fn_mag = (2.0 / 3.0) * s_n * k.overlap + gamma_n * v_n;
+    ContactForce out;
+    out.normal_force = std::abs(fn_mag);
+    out.force_i = -fn_mag * n;
+
+    // M-2.3: contact-point velocity and its tangential part.
+    const Vec3 v_c = k.v_rel + cross(k.lever_i * k.omega_i + k.lever_j * k.omega_j, n);
+    const Vec3 v_t = perp(v_c, n);
+
+    // C-4: rotate the spring onto the current tangent plane, keep its length.
+    const double xi_old2 = norm2(xi);
+    if (xi_old2 > 0.0) {
+        Vec3 xp = perp(xi, n);
+        const double xp2 = norm2(xp);
+        xi = xp2 > 0.0 ? xp * std::sqrt(xi_old2 / xp2) : Vec3{};
+    }
+    xi += v_t * dt;
+
+    Vec3 ft = -s_t * xi - gamma_t * v_t;
+    const double f_coulomb = p.friction * out.normal_force; // C-5: contact force only
+    const double spring2 = s_t * s_t * norm2(xi);
+    if (spring2 > f_coulomb * f_coulomb) {
+        // Sliding: cut the spring back to the Coulomb limit; no tangential damping while sliding.
+        const double scale = f_coulomb / std::sqrt(spring2);
+        xi *= scale;
+        ft = -s_t * xi;
+    }
+    out.force_i += ft;
+    // Torques from the tangential force at the contact point (M-2.3).
+    out.torque_i = k.lever_i * cross(n, ft);
+    out.torque_j = k.lever_j * cross(n, ft);
+
+    if (p.rolling_friction > 0.0) {
+        // M-2.4 (EDEM/LIGGGHTS CDT rolling resistance).
+        const Vec3 w_rel = perp(k.omega_i - k.omega_j, n);
+        const double w2 = norm2(w_rel);
+        if (w2 > 0.0) {
+            const Vec3 t_roll =
+                (-p.rolling_friction * out.normal_force * k.r_eff / std::sqrt(w2)) * w_rel;
+            out.torque_i += t_roll;
+            out.torque_j -= t_roll;
+        }
+    }
+    return out;
+}
+
+/// Particle-particle contact (δ = -h > 0), lever arms c = r - δ/2.
+inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& p, Vec3& xi,
+                               double dt) {
+    const double overlap = -g.gap;
+    const ContactKinematics k{g.n,        overlap,           g.r_eff,   g.m_eff,
+                              g.r_i - 0.5 * overlap, g.r_j - 0.5 * overlap, g.v_rel,
+                              g.omega_i,  g.omega_j};
+    const ContactForce c = hertz_mindlin_contact(k, p, xi, dt);
+    return {c.force_i, c.torque_i, c.torque_j};
+}
+
+} // namespace drydem

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// Pair lubrication of the liquid film between two nearby spheres: model.md M-4.1-M-4.3; paper
+// Eq. 6 (Kroupa et al. 2016 / Dance & Maxey 2003 squeeze term) times the Vinogradova (1995)
+// factor Eq. 7; tangential and rotational terms from the leading equal-sphere resistance functions.
+//   r_L = 2R* (C-15),  κ = h/r_L,  κ_e = max(κ, κ_c),  active for κ ≤ 1 (h ≤ r_L)
+//   X(κ)   = 1/(4κ) - (9/40) ln κ - (3/112) κ ln κ
+//   f*(κ)  = (κ/(3κ_c)) [(1 + κ/(6κ_c)) ln(1 + 6κ_c/κ) - 1]
+//   F_nl,i = -6πη r_L X(κ_e) f*(κ_e) v_n n                       (f* on this term only, C-16)
+//   L = ln(1/κ_e),  v_s = v_i - v_j + (c_i ω_i + c_j ω_j) × n,   F_tl,i = -πη r_L L (v_s)_⊥
+//   T_i = c_i n × F_tl,i - 8πη r_L³ [(3/40) L (ω_r)_⊥ + (1/8) κ_e L (ω_r·n) n],  ω_r = ω_i - ω_j
+//   T_j = c_j n × F_tl,i + 8πη r_L³ [(3/40) L (ω_r)_⊥ + (1/8) κ_e L (ω_r·n) n]
+// Lever arms: c_i = r_i + h/2, c_j = r_j + h/2 (centres to the mid-plane of the gap; r - δ/2 in
+// overlap, as in M-2.3). M-4.3 prints r_i, r_j; those differ by O(h) and give the pair moving as
+// one rigid body a spurious sliding velocity -h Ω × n. With c_i + c_j = D the rigid-body check
+// of M-4.3 / V-7 holds exactly, and so does conservation of angular momentum; for touching
+// spheres both forms agree. Beyond κ = 1 the pair feels nothing (I-7: the normal force jumps
+// there).
+// Viscosity: the unreduced liquid η = 1.801 Pa s (C-17).
+#pragma once
+#include "drydem/forces/pair_geometry.hpp"
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace drydem {
+
+struct LubricationParams {
+    double viscosity = 0.0; ///< η [Pa s]; 0 = off
+    double kappa_c = 0.1;   ///< κ_c = h_c / r_L: below it every coefficient is frozen
+};
+
+/// r_L = 2R* = 2 r_i r_j / (r_i + r_j) (C-15).
+inline double lubrication_radius(double r_i, double r_j) { return 2.0 * r_i * r_j / (r_i + r_j); }
+
+/// Squeeze resistance X(κ) of Eq. 6 in units of 6πη r_L (singular part of X^A_11).
+inline double lubrication_x(double kappa) {
+    const double lk = std::log(kappa);
+    return 0.25 / kappa - (9.0 / 40.0) * lk - (3.0 / 112.0) * kappa * lk;
+}
+
+/// Vinogradova slip factor f* of Eq. 7 with h/h_c = κ/κ_c.
+inline double vinogradova_factor(double kappa, double kappa_c) {
+    const double q = kappa / kappa_c;
+    return (q / 3.0) * ((1.0 + q / 6.0) * std::log(1.0 + 6.0 / q) - 1.0);
+}
+
+inline PairForce lubrication(const PairGeometry& g, const LubricationParams& p) {
+    if (p.viscosity <= 0.0) return {};
+    const double r_l = 2.0 * g.r_eff;
+    const double kappa = g.gap / r_l;
+    if (kappa > 1.0) return {};
+    const double k_e = std::max(kappa, p.kappa_c); // freeze below h_c and in overlap
+    const double l = -std::log(k_e);
+    const double pi_eta = std::numbers::pi * p.viscosity;
+    const Vec3& n = g.n;
+
+    const Vec3 f_n =
+        (-6.0 * pi_eta * r_l * lubrication_x(k_e) * vinogradova_factor(k_e, p.kappa_c) * g.v_n) * n;
+
+    const double c_i = g.r_i + 0.5 * g.gap, c_j = g.r_j + 0.5 * g.gap;
+    const Vec3 v_s = g.v_rel + cross(c_i * g.omega_i + c_j * g.omega_j, n);
+    const Vec3 f_t = (-pi_eta * r_l * l) * perp(v_s, n);
+
+    // Pure relative rotation: rolling (3/40) and twisting (κ/8) resistance, equal and opposite.
+    const Vec3 w_r = g.omega_i - g.omega_j;
+    const double w_n = dot(w_r, n);
+    const Vec3 t_r = (8.0 * pi_eta * r_l * r_l * r_l * l) *
+                     ((3.0 / 40.0) * perp(w_r, n) + (0.125 * k_e * w_n) * n);
+    const Vec3 lever = cross(n, f_t);
+    return {f_n + f_t, c_i * lever - t_r, c_j * lever + t_r};
+}
+
+/// Largest gap h at which the law acts: r_L (h ≤ r_L); 0 when disabled.
+inline double lubrication_range(const LubricationParams& p, double r_i, double r_j) {
+    return p.viscosity > 0.0 ? lubrication_radius(r_i, r_j) : 0.0;
+}
+
+} // namespace drydem

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// Particle-substrate interactions with the rigid current collector, the plane z = 0.
+// (a) Contact: model.md M-2.6, the Hertz-Mindlin law of M-2 (hertz_mindlin.hpp) with δ = r - z,
+//     n = -ẑ (from the particle toward the wall), R* = r, m* = m, lever c_i = r - δ (the contact
+//     point lies on the plane), c_j = 0 and ω_j = 0. Aluminium substrate (C-8, C-6); no van der
+//     Waals with the wall (C-14).
+// (b) Lubrication: model.md M-4.4, sphere-plane near-contact asymptotics (Cox & Brenner 1967,
+//     Goldman, Cox & Brenner 1967) with the Vinogradova factor (Eq. 7) on the normal term.
+//   h = z - r, κ = h/r, κ_e = max(κ, κ_c), active for κ ≤ 1, L = ln(1/κ_e)
+//   X_w = 1/κ_e - (1/5) ln κ_e - (1/21) κ_e ln κ_e
+//   A_w = (8/15) L + (64/375) κ_e L,  B_w = (2/15) L + (86/375) κ_e L,
+//   D_w = (2/5) L + (66/125) κ_e L
+//   F = -6πη r X_w f* v_z ẑ - 6πη r A_w v_t + 6πη r² B_w (ω × ẑ)
+//   T =  6πη r² B_w (ẑ × v_t) - 8πη r³ D_w ω_t - 8πη r³ (1/2) κ_e L ω_z ẑ
+//   The two coupling terms share 6πη r² B_w, so the resistance matrix is symmetric (dissipative).
+#pragma once
+#include "drydem/forces/hertz_mindlin.hpp"
+#include "drydem/forces/lubrication.hpp"
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace drydem {
+
+/// Hertz-Mindlin contact with the substrate; `wall_history` is the tangential spring ξ of the
+/// (id, substrate) contact, erased when the contact opens (M-2.3, M-2.5).
+inline BodyForce substrate_contact(double z, double r, double m, const Vec3& v, const Vec3& omega,
+                                   const HertzMindlinParams& p, Vec3& wall_history, double dt) {
+    const double overlap = r - z;
+    if (overlap <= 0.0) {
+        wall_history = {};
+        return {};
+    }
+    const ContactKinematics k{Vec3{0.0, 0.0, -1.0}, overlap, r, m, r - overlap, 0.0, v, omega, {}};
+    const ContactForce c = hertz_mindlin_contact(k, p, wall_history, dt);
+    return {c.force_i, c.torque_i};
+}
+
+struct SubstrateLubricationParams {
+    double viscosity = 0.0; ///< η [Pa s] (C-17: unreduced); 0 = off
+    double kappa_c = 0.1;   ///< κ_c = h_c / r
+};
+
+/// Squeeze resistance X_w(κ) in units of 6πη r (sphere-plane).
+inline double substrate_lubrication_x(double kappa) {
+    const double lk = std::log(kappa);
+    return 1.0 / kappa - 0.2 * lk - (1.0 / 21.0) * kappa * lk;
+}
+
+inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const Vec3& omega,
+                                       const SubstrateLubricationParams& p) {
+    if (p.viscosity <= 0.0) return {};
+    const double kappa = (z - r) / r;
+    if (kappa > 1.0) return {};
+    const double k_e = std::max(kappa, p.kappa_c);
+    const double l = -std::log(k_e);
+    const double a_w = (8.0 / 15.0) * l + (64.0 / 375.0) * k_e * l;
+    const double b_w = (2.0 / 15.0) * l + (86.0 / 375.0) * k_e * l;
+    const double d_w = 0.4 * l + (66.0 / 125.0) * k_e * l;
+    const double c_f = 6.0 * std::numbers::pi * p.viscosity * r;         // 6πη r
+    const double c_r = 8.0 * std::numbers::pi * p.viscosity * r * r * r; // 8πη r³
+    const Vec3 z_hat{0.0, 0.0, 1.0};
+    const Vec3 v_t{v.x, v.y, 0.0};
+    const Vec3 w_t{omega.x, omega.y, 0.0};
+    const double x_w = substrate_lubrication_x(k_e) * vinogradova_factor(k_e, p.kappa_c);
+    BodyForce out;
+    out.force =
+        (-c_f * x_w * v.z) * z_hat - (c_f * a_w) * v_t + (c_f * r * b_w) * cross(omega, z_hat);
+    out.torque = (c_f * r * b_w) * cross(z_hat, v_t) - (c_r * d_w) * w_t -
+                 (c_r * 0.5 * k_e * l * omega.z) * z_hat;
+    return out;
+}
+
+/// Largest gap z - r at which the substrate lubrication acts: r; 0 when disabled.
+inline double substrate_lubrication_range(const SubstrateLubricationParams& p, double r) {
+    return p.viscosity > 0.0 ? r : 0.0;
+}
+
+} // namespace drydem

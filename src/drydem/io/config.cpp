@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: MIT
+// Config parsing: a schema table maps every TOML key to a Config member, its physical dimension
+// and its allowed range; units are converted here and nowhere else.
+#include "drydem/io/config.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/io/units.hpp"
+#include <fmt/format.h>
+#include <toml++/toml.h>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <variant>
+
+namespace drydem {
+namespace {
+
+using Member = std::variant<double Config::*, int Config::*, std::uint64_t Config::*,
+                            bool Config::*, std::string Config::*, std::vector<double> Config::*>;
+
+struct Field {
+    std::string_view key;
+    Member member;
+    Dimension dim = Dimension::dimensionless;
+    double lo = -std::numeric_limits<double>::infinity();
+    double hi = std::numeric_limits<double>::infinity();
+    bool lo_open = false; ///< value must be > lo (else ≥ lo)
+    std::vector<std::string_view> choices = {}; ///< allowed strings
+};
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+using D = Dimension;
+
+const std::vector<Field>& schema() {
+    static const std::vector<Field> fields = {
+        {"run.name", &Config::name},
+        {"run.seed", &Config::seed, D::dimensionless, 0, 1.8e19},
+        {"run.time_step", &Config::time_step, D::time, 0, 1e-6, true},
+        {"run.threads", &Config::threads, D::dimensionless, 0, 1024},
+        {"run.max_process_time", &Config::max_process_time, D::time, 0, inf, true},
+        {"film.areal_loading", &Config::areal_loading, D::areal_density, 0, inf, true},
+        {"film.solids_mass_fraction", &Config::solids_mass_fraction, D::dimensionless, 0, 1, true},
+        {"film.box_x", &Config::box_x, D::length, 36e-6, inf},
+        {"film.box_y", &Config::box_y, D::length, 36e-6, inf},
+        {"formulation.ncm_mass_fraction", &Config::ncm_mass_fraction, D::dimensionless, 0, 1},
+        {"formulation.pvdf_mass_fraction", &Config::pvdf_mass_fraction, D::dimensionless, 0, 1},
+        {"formulation.cb_mass_fraction", &Config::cb_mass_fraction, D::dimensionless, 0, 1},
+        {"formulation.ncm_diameters", &Config::ncm_diameters, D::length, 0, 1e-3, true},
+        {"formulation.cb_diameter", &Config::cb_diameter, D::length, 0, 1e-3, true},
+        {"formulation.cb_porosity", &Config::cb_porosity, D::dimensionless, 0, 1},
+        {"materials.ncm_density", &Config::ncm_density, D::density, 0, inf, true},
+        {"materials.cb_density", &Config::cb_density, D::density, 0, inf, true},
+        {"materials.pvdf_density", &Config::pvdf_density, D::density, 0, inf, true},
+        {"materials.solvent_density", &Config::solvent_density, D::density, 0, inf, true},
+        {"materials.viscosity", &Config::viscosity, D::viscosity, 0, inf},
+        {"materials.surface_tension", &Config::surface_tension, D::surface_tension, 0, inf},
+        {"materials.contact_angle", &Config::contact_angle, D::angle, 0, 3.14159265358979},
+        {"materials.ncm_youngs_modulus", &Config::ncm_youngs_modulus, D::pressure, 0, inf, true},
+        {"materials.cb_youngs_modulus", &Config::cb_youngs_modulus, D::pressure, 0, inf, true},
+        {"materials.poisson_ratio", &Config::poisson_ratio, D::dimensionless, -1, 0.5},
+        {"materials.substrate_youngs_modulus", &Config::substrate_youngs_modulus, D::pressure, 0,
+         inf, true},
+        {"materials.substrate_poisson_ratio", &Config::substrate_poisson_ratio, D::dimensionless,
+         -1, 0.5},
+        {"contact.friction", &Config::friction, D::dimensionless, 0, 10},
+        {"contact.substrate_friction", &Config::substrate_friction, D::dimensionless, 0, 10},
+        {"contact.restitution", &Config::restitution, D::dimensionless, 0, 1, true},
+        {"contact.rolling_friction", &Config::rolling_friction, D::dimensionless, 0, 10},
+        {"van_der_waals.hamaker_cb_cb", &Config::hamaker_cb_cb, D::energy, 0, 1e-15},
+        {"van_der_waals.hamaker_ncm_cb", &Config::hamaker_ncm_cb, D::energy, 0, 1e-15},
+        {"van_der_waals.hamaker_ncm_ncm", &Config::hamaker_ncm_ncm, D::energy, 0, 1e-15},
+        {"van_der_waals.min_gap_cb_cb", &Config::min_gap_cb_cb, D::length, 0, 1e-6, true},
+        {"van_der_waals.min_gap_ncm_cb", &Config::min_gap_ncm_cb, D::length, 0, 1e-6, true},
+        {"van_der_waals.min_gap_ncm_ncm", &Config::min_gap_ncm_ncm, D::length, 0, 1e-6, true},
+        {"van_der_waals.cutoff", &Config::vdw_cutoff, D::length, 0, 20e-6},
+        {"lubrication.enabled", &Config::lubrication},
+        {"lubrication.substrate", &Config::substrate_lubrication},
+        {"lubrication.kappa_c", &Config::kappa_c, D::dimensionless, 0, 1, true},
+        {"lubrication.uses_reduced_viscosity", &Config::lubrication_uses_reduced_viscosity},
+        {"scaling.time_factor", &Config::time_factor, D::dimensionless, 0, inf, true},
+        {"scaling.viscosity_reduction", &Config::viscosity_reduction, D::dimensionless, 0, inf, true},
+        {"scaling.capillary_factor", &Config::capillary_factor, D::dimensionless, 0, inf},
+        {"scaling.hamaker_factor", &Config::hamaker_factor, D::dimensionless, 0, inf},
+        {"scaling.gravity", &Config::gravity, D::acceleration, 0, inf},
+        {"dryer.shrinkage_rates", &Config::shrinkage_rates, D::velocity, 0, 1e-3, true},
+        {"dryer.line_speed", &Config::line_speed, D::velocity, 0, inf, true},
+        {"dryer.zone_length", &Config::zone_length, D::length, 0, inf, true},
+        {"drying.final_gap", &Config::final_gap, D::length, 0, 1e-3},
+        {"drying.relaxation", &Config::relaxation, D::time, 0, inf},
+        {"drying.fluid_forces_above_level", &Config::fluid_forces_above_level, D::dimensionless,
+         -inf, inf, false, {"keep"}},
+        {"numerics.skin", &Config::skin, D::length, 0, 10e-6, true},
+        {"numerics.overlap_limit", &Config::overlap_limit, D::dimensionless, 0, 2, true},
+        {"numerics.stability_guard", &Config::stability_guard, D::dimensionless, -inf, inf, false,
+         {"refuse", "warn"}},
+        {"numerics.sort_every", &Config::sort_every, D::dimensionless, 0, 1e6},
+        {"output.timeseries_every", &Config::timeseries_every, D::time, 0, inf, true},
+        {"output.snapshot_every", &Config::snapshot_every, D::time, 0, inf},
+        {"output.progress_every", &Config::progress_every, D::time, 0, inf, true},
+    };
+    return fields;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+std::string nearest_key(std::string_view key) {
+    std::string_view best;
+    std::size_t best_d = SIZE_MAX;
+    for (const Field& f : schema()) {
+        const std::size_t d = edit_distance(key, f.key);
+        if (d < best_d) {
+            best_d = d;
+            best = f.key;
+        }
+    }
+    return std::string(best);
+}
+
+std::string node_text(const toml::node& n) {
+    std::ostringstream s;
+    if (auto str = n.as_string()) s << '"' << str->get() << '"';
+    else n.visit([&](auto&& v) { s << v; });
+    return s.str();
+}
+
+double read_number(const toml::node& n, const Field& f) {
+    if (auto v = n.as_floating_point()) return v->get();
+    if (auto v = n.as_integer()) return double(v->get());
+    if (auto v = n.as_string()) return parse_quantity(v->get(), f.dim, f.key);
+    throw InputError(fmt::format("config key '{}': {} is not a number or a quantity with a unit",
+                                 f.key, node_text(n)));
+}
+
+void check_range(const Field& f, double v, const std::string& text) {
+    const bool low = f.lo_open ? !(v > f.lo) : !(v >= f.lo);
+    if (!std::isfinite(v) || low || !(v <= f.hi))
+        throw InputError(fmt::format("config key '{}': {} is out of range; allowed {}{:g}, {:g}] "
+                                     "(SI units, {})",
+                                     f.key, text, f.lo_open ? "(" : "[", f.lo, f.hi,
+                                     dimension_name(f.dim)));
+}
+
+void assign(Config& c, const Field& f, const toml::node& n) {
+    const std::string text = node_text(n);
+    std::visit(
+        [&](auto member) {
+            using T = std::remove_cvref_t<decltype(c.*member)>;
+            if constexpr (std::is_same_v<T, double>) {
+                const double v = read_number(n, f);
+                check_range(f, v, text);
+                c.*member = v;
+            } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::uint64_t>) {
+                auto v = n.as_integer();
+                if (!v) throw InputError(fmt::format("config key '{}': {} must be an integer", f.key, text));
+                check_range(f, double(v->get()), text);
+                c.*member = T(v->get());
+            } else if constexpr (std::is_same_v<T, bool>) {
+                auto v = n.as_boolean();
+                if (!v) throw InputError(fmt::format("config key '{}': {} must be true or false", f.key, text));
+                c.*member = v->get();
+            } else if constexpr (std::is_same_v<T, std::string>) {
+                auto v = n.as_string();
+                if (!v) throw InputError(fmt::format("config key '{}': {} must be a string", f.key, text));
+                if (!f.choices.empty() &&
+                    std::find(f.choices.begin(), f.choices.end(), v->get()) == f.choices.end()) {
+                    std::string allowed;
+                    for (auto ch : f.choices) allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", ch);
+                    throw InputError(fmt::format("config key '{}': {} is not allowed; allowed: {}",
+                                                 f.key, text, allowed));
+                }
+                c.*member = v->get();
+            } else {
+                auto arr = n.as_array();
+                if (!arr || arr->empty())
+                    throw InputError(fmt::format("config key '{}': {} must be a non-empty array", f.key, text));
+                T values;
+                for (const toml::node& e : *arr) {
+                    const double v = read_number(e, f);
+                    check_range(f, v, node_text(e));
+                    values.push_back(v);
+                }
+                c.*member = values;
+            }
+        },
+        f.member);
+}
+
+void walk(const toml::table& t, const std::string& prefix, Config& c) {
+    for (const auto& [k, node] : t) {
+        const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+        if (auto sub = node.as_table()) {
+            walk(*sub, key, c);
+            continue;
+        }
+        const auto& fields = schema();
+        auto it = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.key == key; });
+        if (it == fields.end())
+            throw InputError(fmt::format("unknown config key '{}' (value {}); did you mean '{}'? "
+                                         "(`drydem config default` lists every key)",
+                                         key, node_text(node), nearest_key(key)));
+        assign(c, *it, node);
+    }
+}
+
+void apply_override(toml::table& root, const std::string& spec) {
+    const auto eq = spec.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError(fmt::format("--set '{}': expected KEY=VALUE, e.g. --set run.seed=7", spec));
+    const std::string key = spec.substr(0, eq), value = spec.substr(eq + 1);
+    toml::table* t = &root;
+    std::size_t start = 0;
+    for (std::size_t dot; (dot = key.find('.', start)) != std::string::npos; start = dot + 1) {
+        const std::string part = key.substr(start, dot - start);
+        if (!t->contains(part)) t->insert(part, toml::table{});
+        t = (*t)[part].as_table();
+        if (!t) throw InputError(fmt::format("--set '{}': '{}' is not a table", spec, part));
+    }
+    const std::string leaf = key.substr(start);
+    // The value is TOML when it parses as such (numbers, booleans, arrays, quoted strings),
+    // otherwise a bare string such as 6.5um.
+    try {
+        toml::table v = toml::parse("v = " + value);
+        t->insert_or_assign(leaf, *v.get("v"));
+    } catch (const toml::parse_error&) {
+        t->insert_or_assign(leaf, value);
+    }
+}
+
+} // namespace
+
+Config load_config(std::string_view toml_text, std::string_view source_name,
+                   const std::vector<std::string>& overrides) {
+    toml::table root;
+    try {
+        root = toml::parse(toml_text, source_name);
+    } catch (const toml::parse_error& e) {
+        throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", source_name,
+                                     e.source().begin.line, e.source().begin.column,
+                                     e.description()));
+    }
+    for (const std::string& o : overrides) apply_override(root, o);
+    Config c;
+    walk(root, "", c);
+    const double mass_sum = c.ncm_mass_fraction + c.pvdf_mass_fraction + c.cb_mass_fraction;
+    if (std::abs(mass_sum - 1.0) > 1e-6)
+        throw InputError(fmt::format("config keys 'formulation.*_mass_fraction': NCM + PVDF + CB = "
+                                     "{:g}, must sum to 1", mass_sum));
+    return c;
+}
+
+Config load_config_file(const std::string& path, const std::vector<std::string>& overrides) {
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("cannot read config file '{}'", path));
+    std::stringstream s;
+    s << in.rdbuf();
+    return load_config(s.str(), path, overrides);
+}
+
+std::string to_toml(const Config& c) {
+    std::string out = "# Resolved DryDEM configuration, every value in SI units.\n";
+    std::string table;
+    for (const Field& f : schema()) {
+        const auto dot = f.key.find('.');
+        const std::string_view tab = f.key.substr(0, dot), leaf = f.key.substr(dot + 1);
+        if (tab != table) {
+            out += fmt::format("\n[{}]\n", tab);
+            table = std::string(tab);
+        }
+        std::visit(
+            [&](auto member) {
+                using T = std::remove_cvref_t<decltype(c.*member)>;
+                const T& v = c.*member;
+                if constexpr (std::is_same_v<T, double>) out += fmt::format("{} = {:.17g}\n", leaf, v);
+                else if constexpr (std::is_same_v<T, bool>) out += fmt::format("{} = {}\n", leaf, v);
+                else if constexpr (std::is_same_v<T, std::string>) out += fmt::format("{} = \"{}\"\n", leaf, v);
+                else if constexpr (std::is_same_v<T, std::vector<double>>) {
+                    out += fmt::format("{} = [", leaf);
+                    for (std::size_t i = 0; i < v.size(); ++i) out += fmt::format("{}{:.17g}", i ? ", " : "", v[i]);
+                    out += "]\n";
+                } else out += fmt::format("{} = {}\n", leaf, v);
+            },
+            f.member);
+    }
+    return out;
+}
+
+} // namespace drydem

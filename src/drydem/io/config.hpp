@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// Run configuration: every value in SI, converted once from the TOML at the edge. The defaults
+// are the paper's 20.1 mg/cm2 case (model.md M-1 ... M-9); the embedded default configuration
+// (default_config_toml()) lists the same values with units and is tested to agree with them.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace toml {
+inline namespace v3 {
+class table;
+}
+} // namespace toml
+
+namespace drydem {
+
+struct Config {
+    // [run]
+    std::string name = "lippke2022-20.1mgcm2";
+    std::uint64_t seed = 12345;
+    double time_step = 1.0e-11;          ///< simulated (scaled) Δt [s] (C-23)
+    int threads = 0;                     ///< 0 = all cores
+    double max_process_time = 300.0;     ///< safety stop [s physical]
+
+    // [film]
+    double areal_loading = 0.201;        ///< dry areal mass L [kg/m^2] (= 20.1 mg/cm2)
+    double solids_mass_fraction = 0.70;  ///< x_s
+    double box_x = 75e-6, box_y = 75e-6; ///< periodic base [m]
+
+    // [formulation]
+    double ncm_mass_fraction = 0.94, pvdf_mass_fraction = 0.03, cb_mass_fraction = 0.03;
+    std::vector<double> ncm_diameters = {6.50e-6, 7.58e-6, 8.60e-6, 9.82e-6, 11.35e-6};
+    double cb_diameter = 1.5e-6;
+    double cb_porosity = 0.75;           ///< ε_CB (paper Sec. 9)
+
+    // [materials]
+    double ncm_density = 4740, cb_density = 1660, pvdf_density = 1780, solvent_density = 1030;
+    double viscosity = 1.801;            ///< PVDF-in-NMP liquid η [Pa s]
+    double surface_tension = 0.041;      ///< σ [N/m]
+    double contact_angle = 0.69813170079773179; ///< θ = 40° [rad]
+    double ncm_youngs_modulus = 142e9, cb_youngs_modulus = 142e9; ///< C-9
+    double poisson_ratio = 0.3;          ///< C-10
+    double substrate_youngs_modulus = 70e9, substrate_poisson_ratio = 0.33; ///< C-8
+
+    // [contact]
+    double friction = 0.8, substrate_friction = 0.8; ///< μ_s (paper Sec. 9; C-6)
+    double restitution = 0.5;            ///< C-11
+    double rolling_friction = 0.0;       ///< C-7
+
+    // [van_der_waals] physical Hamaker constants [J] and minimum gaps [m] (M-3)
+    double hamaker_cb_cb = 4.64e-20, hamaker_ncm_cb = 9.5e-20, hamaker_ncm_ncm = 2.11e-19;
+    double min_gap_cb_cb = 5e-9, min_gap_ncm_cb = 10e-9, min_gap_ncm_ncm = 50e-9;
+    double vdw_cutoff = 0.0;             ///< h_cut [m]; 0 = the pair's lubrication range r_L (C-13)
+
+    // [lubrication] (M-4)
+    bool lubrication = true;
+    bool substrate_lubrication = true;
+    double kappa_c = 0.1;
+    bool lubrication_uses_reduced_viscosity = false; ///< C-17
+
+    // [scaling] (M-7)
+    double time_factor = 1e7;            ///< k
+    double viscosity_reduction = 10;     ///< b
+    double capillary_factor = 9e3;
+    double hamaker_factor = 1e7;
+    double gravity = 9.81;               ///< physical g [m/s^2]
+
+    // [dryer] (M-8.1, paper Table 2)
+    std::vector<double> shrinkage_rates = {0.670e-6, 1.193e-6}; ///< physical [m/s] per zone
+    double line_speed = 2.0 / 60.0;      ///< [m/s]
+    double zone_length = 2.0;            ///< [m]
+
+    // [drying]
+    double final_gap = 0.0;              ///< end criterion top - z_L [m]; 0 = largest diameter (M-8.2)
+    double relaxation = 10.0;            ///< relaxation window [s physical] (C-22)
+    std::string fluid_forces_above_level = "keep"; ///< C-19: "keep" (only option implemented)
+
+    // [numerics]
+    double skin = 0.1e-6;
+    double overlap_limit = 0.5;
+    std::string stability_guard = "refuse"; ///< "refuse" | "warn" (M-9.2)
+    int sort_every = 10;
+
+    // [output]
+    double timeseries_every = 0.5;       ///< [s physical]
+    double snapshot_every = 10.0;        ///< [s physical]; 0 = no intermediate snapshots
+    double progress_every = 10.0;        ///< wall-clock seconds between progress lines
+};
+
+/// The embedded default configuration (the paper's 20.1 mg/cm2 case), as TOML text.
+std::string_view default_config_toml();
+
+/// Parses and validates a TOML document (unknown keys, wrong units and out-of-range values throw
+/// InputError naming the key, the value and what is allowed). `overrides` are "dotted.key=value"
+/// strings applied on top (value parsed as TOML, else taken as a string).
+Config load_config(std::string_view toml_text, std::string_view source_name,
+                   const std::vector<std::string>& overrides = {});
+Config load_config_file(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// The resolved configuration as TOML, every value in SI (written into each output folder).
+std::string to_toml(const Config& c);
+
+} // namespace drydem

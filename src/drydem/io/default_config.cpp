@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// The embedded default configuration: the paper's 20.1 mg/cm2 case in the full 75 x 75 um box
+// (Lippke et al. 2022; every number from model.md). Kept equal to Config{} by a unit test.
+#include "drydem/io/config.hpp"
+
+namespace drydem {
+
+std::string_view default_config_toml() {
+    return R"toml(# DryDEM configuration: the paper's 20.1 mg/cm2 case (Lippke et al., Energy Technol. 2022).
+# Values are SI numbers or strings with units ("6.5 um", "20.1 mg/cm^2", "1.801 Pa*s", "40 deg").
+
+[run]
+name = "lippke2022-20.1mgcm2"
+seed = 12345
+time_step = "1e-11 s"        # scaled time step (model.md C-23; guarded by M-9.2)
+threads = 0                  # 0 = all cores
+max_process_time = "300 s"   # safety stop (physical time)
+
+[film]
+areal_loading = "20.1 mg/cm^2"   # dry coating mass per area
+solids_mass_fraction = 0.70      # x_s of the slurry
+box_x = "75 um"                  # periodic base (>= 36 um, model.md M-2.5)
+box_y = "75 um"
+
+[formulation]
+ncm_mass_fraction = 0.94
+pvdf_mass_fraction = 0.03
+cb_mass_fraction = 0.03
+ncm_diameters = ["6.50 um", "7.58 um", "8.60 um", "9.82 um", "11.35 um"]  # equal-volume classes
+cb_diameter = "1.5 um"
+cb_porosity = 0.75               # CB agglomerate porosity (calibrated, paper Sec. 9)
+
+[materials]
+ncm_density = "4.74 g/cm^3"
+cb_density = "1.66 g/cm^3"       # solid carbon; particles carry pore NMP (model.md M-1.3)
+pvdf_density = "1.78 g/cm^3"     # C-1
+solvent_density = "1.03 g/cm^3"  # NMP
+viscosity = "1.801 Pa*s"         # PVDF-in-NMP liquid
+surface_tension = "0.041 N/m"
+contact_angle = "40 deg"
+ncm_youngs_modulus = "142 GPa"
+cb_youngs_modulus = "142 GPa"    # C-9
+poisson_ratio = 0.3              # C-10
+substrate_youngs_modulus = "70 GPa"  # aluminium current collector, C-8
+substrate_poisson_ratio = 0.33
+
+[contact]
+friction = 0.8                   # calibrated sliding friction, all pairs
+substrate_friction = 0.8         # C-6
+restitution = 0.5                # C-11
+rolling_friction = 0.0           # C-7 (off)
+
+[van_der_waals]                  # physical Hamaker constants; scaled by scaling.hamaker_factor
+hamaker_cb_cb = "4.64e-20 J"
+hamaker_ncm_cb = "9.5e-20 J"     # C-12: the paper prints 9.5e-19 J (probable typo)
+hamaker_ncm_ncm = "2.11e-19 J"
+min_gap_cb_cb = "5 nm"
+min_gap_ncm_cb = "10 nm"
+min_gap_ncm_ncm = "50 nm"
+cutoff = 0                       # 0 = each pair's lubrication range r_L (C-13)
+
+[lubrication]
+enabled = true
+substrate = true
+kappa_c = 0.1
+uses_reduced_viscosity = false   # C-17
+
+[scaling]                        # the paper's time-scaling scheme (Sec. 4.1, model.md M-7)
+time_factor = 1e7                # k
+viscosity_reduction = 10         # b (Stokes drag viscosity / b)
+capillary_factor = 9e3
+hamaker_factor = 1e7
+gravity = "9.81 m/s^2"           # physical; simulated g = g k / b
+
+[dryer]                          # paper Table 2, 20.1 mg/cm2
+shrinkage_rates = ["0.670 um/s", "1.193 um/s"]
+line_speed = "2 m/min"
+zone_length = "2 m"
+
+[drying]
+final_gap = 0                    # end criterion top - level; 0 = largest particle diameter (M-8.2)
+relaxation = "10 s"              # physical time after the final thickness (C-22)
+fluid_forces_above_level = "keep"  # C-19
+
+[numerics]
+skin = "0.1 um"
+overlap_limit = 0.5              # stop when an overlap exceeds this fraction of the smaller radius
+stability_guard = "refuse"       # refuse | warn when dt exceeds the damping bound (M-9.2)
+sort_every = 10                  # spatial re-sort every N neighbor rebuilds
+
+[output]
+timeseries_every = "0.5 s"       # physical time between time-series rows
+snapshot_every = "10 s"          # physical time between snapshots (0 = only the final one)
+progress_every = "10 s"          # wall-clock time between progress lines
+)toml";
+}
+
+} // namespace drydem

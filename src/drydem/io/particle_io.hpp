@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Particle files in and out: our CSV (final.csv, `--particles`), LAMMPS/LIGGGHTS data files
+// (atom_style sphere/granular) and LAMMPS text dumps (last frame), so beds settled in LIGGGHTS or
+// LAMMPS can be dried here and our results analysed by the same reader. All values SI.
+#pragma once
+#include "drydem/core/particles.hpp"
+#include "drydem/core/vec3.hpp"
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace drydem {
+
+struct ParticleRecord {
+    std::uint32_t id = 0;
+    int type = 1;         ///< as in the file: 1-based (type = species + 1)
+    double radius = 0.0;  ///< [m]
+    double density = 0.0; ///< [kg/m^3]; NaN when the file has none (caller fills it per species)
+    Vec3 position;        ///< [m], as in the file (not wrapped into the box)
+};
+
+struct ParticleFile {
+    std::vector<ParticleRecord> particles; ///< in file order
+    std::optional<double> lx, ly;          ///< periodic lengths [m] where the file has a box
+    std::optional<double> xlo, ylo;        ///< box origin [m]
+    std::string format;                    ///< "csv", "lammps data" or "lammps dump"
+};
+
+/// Reads a particle file, detecting the format from its content:
+///  - CSV with a header naming the columns: id, type, x_m, y_m, z_m, radius_m (or diameter_m),
+///    optional density_kg_m3; any order, further columns ignored;
+///  - LAMMPS/LIGGGHTS data file, atom_style sphere or granular
+///    (Atoms: `id type diameter density x y z [ix iy iz]`; image flags are ignored);
+///  - LAMMPS text dump: the last frame, columns by name (id type x|xu|xs y.. z.. radius|diameter
+///    [density|mass]).
+/// Ids must be unique. Throws InputError naming the file and line for anything else (also for
+/// gzip files: gunzip them first).
+[[nodiscard]] ParticleFile read_particles(const std::filesystem::path& file);
+
+/// Writes `id,type,radius_m,density_kg_m3,x_m,y_m,z_m` sorted by id, type = species + 1, with the
+/// shortest digits that read back bit-exact. Atomic (temporary file + rename). RunError on failure.
+void write_particles_csv(const std::filesystem::path& file, const ParticleStore& particles);
+
+/// Writes `file` through `write` into `file`.tmp and renames it over `file`, so readers (ParaView,
+/// a user's script, a restart) never see a half-written file. RunError on I/O failure.
+void write_file_atomically(const std::filesystem::path& file,
+                           const std::function<void(std::ostream&)>& write);
+
+} // namespace drydem

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/io/snapshot_writers.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/io/particle_io.hpp"
+#include <algorithm>
+#include <charconv>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <iterator>
+#include <numeric>
+#include <optional>
+#include <string_view>
+#include <utility>
+
+namespace drydem {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Out = std::back_insert_iterator<fmt::memory_buffer>;
+
+std::string xml_escape(std::string_view s) {
+    std::string out;
+    for (const char c : s) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&apos;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string xml_unescape(std::string_view s) {
+    static constexpr std::pair<std::string_view, char> entities[]{
+        {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+    std::string out;
+    for (std::size_t i = 0; i < s.size();) {
+        bool replaced = false;
+        for (const auto& [e, c] : entities)
+            if (s.substr(i).starts_with(e)) {
+                out += c;
+                i += e.size();
+                replaced = true;
+                break;
+            }
+        if (!replaced) out += s[i++];
+    }
+    return out;
+}
+
+/// Value of attribute `name="..."` in an XML tag, or nothing.
+std::optional<std::string> attribute(std::string_view tag, std::string_view name) {
+    const auto key = fmt::format(" {}=\"", name);
+    const auto b = tag.find(key);
+    if (b == std::string_view::npos) return std::nullopt;
+    const auto v = b + key.size();
+    const auto e = tag.find('"', v);
+    if (e == std::string_view::npos) return std::nullopt;
+    return xml_unescape(tag.substr(v, e - v));
+}
+
+// 9 significant digits: finer than any length in the model (1e-14 m at 100 um) and half the size
+// of full precision; frames are for looking at, final.csv and checkpoints carry exact values.
+template <class Get>
+void vtp_array(Out out, std::string_view type, std::string_view name, int components,
+               std::size_t n, Get get) {
+    fmt::format_to(out, "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                        "format=\"ascii\">\n",
+                   type, name, components);
+    for (std::size_t i = 0; i < n; ++i) fmt::format_to(out, "          {}\n", get(i));
+    fmt::format_to(out, "        </DataArray>\n");
+}
+
+std::string vec(const Vec3& v) { return fmt::format("{:.9g} {:.9g} {:.9g}", v.x, v.y, v.z); }
+
+} // namespace
+
+void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, double process_time) {
+    const std::size_t n = p.size();
+    fmt::memory_buffer buf;
+    const Out out(buf);
+    fmt::format_to(out, "<?xml version=\"1.0\"?>\n"
+                        "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                        "header_type=\"UInt64\">\n"
+                        "  <PolyData>\n"
+                        "    <FieldData>\n");
+    // TimeValue is the name ParaView looks for; process time is what the user compares with the
+    // dryer, the scaled simulation time is kept next to it.
+    for (const auto& [name, value] : {std::pair<std::string_view, double>{"TimeValue", process_time},
+                                      {"process_time_s", process_time},
+                                      {"sim_time_s", sim_time}})
+        fmt::format_to(out, "      <DataArray type=\"Float64\" Name=\"{}\" NumberOfTuples=\"1\" "
+                            "format=\"ascii\">{}</DataArray>\n",
+                       name, value);
+    fmt::format_to(out, "    </FieldData>\n"
+                        "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
+                        "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+                        "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n",
+                   n);
+    vtp_array(out, "UInt32", "id", 1, n, [&](auto i) { return fmt::format("{}", p.id[i]); });
+    vtp_array(out, "Int32", "type", 1, n,
+              [&](auto i) { return fmt::format("{}", int(p.species[i]) + 1); });
+    vtp_array(out, "Float64", "radius", 1, n,
+              [&](auto i) { return fmt::format("{:.9g}", p.radius[i]); });
+    vtp_array(out, "Float64", "diameter", 1, n,
+              [&](auto i) { return fmt::format("{:.9g}", 2.0 * p.radius[i]); });
+    vtp_array(out, "Float64", "velocity", 3, n, [&](auto i) { return vec(p.velocity[i]); });
+    vtp_array(out, "Float64", "omega", 3, n, [&](auto i) { return vec(p.omega[i]); });
+    vtp_array(out, "Float64", "force", 3, n, [&](auto i) { return vec(p.force[i]); });
+    fmt::format_to(out, "      </PointData>\n      <Points>\n");
+    vtp_array(out, "Float64", "Points", 3, n, [&](auto i) { return vec(p.position[i]); });
+    fmt::format_to(out, "      </Points>\n      <Verts>\n");
+    vtp_array(out, "Int64", "connectivity", 1, n, [](auto i) { return fmt::format("{}", i); });
+    vtp_array(out, "Int64", "offsets", 1, n, [](auto i) { return fmt::format("{}", i + 1); });
+    fmt::format_to(out, "      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n");
+    write_file_atomically(file, [&](std::ostream& os) {
+        os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+    });
+}
+
+void PvdWriter::add(double time, std::string relative_file) {
+    entries_.push_back({time, std::move(relative_file)});
+    write();
+}
+
+void PvdWriter::write() const {
+    fmt::memory_buffer buf;
+    const Out out(buf);
+    fmt::format_to(out, "<?xml version=\"1.0\"?>\n"
+                        "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                        "  <Collection>\n");
+    for (const auto& e : entries_)
+        fmt::format_to(out, "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                       e.time, xml_escape(e.file));
+    fmt::format_to(out, "  </Collection>\n</VTKFile>\n");
+    write_file_atomically(file_, [&](std::ostream& os) {
+        os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+    });
+}
+
+std::size_t PvdWriter::load_existing() {
+    entries_.clear();
+    std::ifstream in(file_);
+    if (!in) return 0;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.find("<DataSet") == std::string::npos) continue;
+        const auto t = attribute(line, "timestep");
+        const auto f = attribute(line, "file");
+        double time = 0.0;
+        if (!t || !f || std::from_chars(t->data(), t->data() + t->size(), time).ec != std::errc{})
+            throw InputError(fmt::format("{}: cannot read the DataSet entry '{}'", file_.string(),
+                                         line));
+        entries_.push_back({time, *f});
+    }
+    return entries_.size();
+}
+
+void append_lammps_dump(std::ostream& os, const ParticleStore& p, const Box& box,
+                        std::int64_t step, double z_top) {
+    // Sorted by id so frames diff cleanly and tools that index by line see a stable order.
+    std::vector<std::uint32_t> order(p.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return p.id[a] < p.id[b]; });
+    fmt::memory_buffer buf;
+    const Out out(buf);
+    fmt::format_to(out,
+                   "ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n{}\nITEM: BOX BOUNDS pp pp fm\n"
+                   "0 {:.10g}\n0 {:.10g}\n0 {:.10g}\nITEM: ATOMS id type x y z radius vx vy vz\n",
+                   step, p.size(), box.lx, box.ly, z_top);
+    for (const auto i : order) {
+        const auto &x = p.position[i], &v = p.velocity[i];
+        fmt::format_to(out, "{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g}\n",
+                       p.id[i], int(p.species[i]) + 1, x.x, x.y, x.z, p.radius[i], v.x, v.y, v.z);
+    }
+    os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+    os.flush();
+    if (!os) throw RunError(fmt::format("writing the LAMMPS dump frame of step {} failed", step));
+}
+
+CsvSeriesWriter::CsvSeriesWriter(const fs::path& file, std::vector<std::string> columns,
+                                 bool append)
+    : file_(file), columns_(std::move(columns)) {
+    std::string header;
+    for (const auto& c : columns_) header += (header.empty() ? "" : ",") + c;
+    std::error_code ec;
+    const bool continuing = append && fs::exists(file_, ec) && fs::file_size(file_, ec) > 0;
+    if (continuing) {
+        // A resumed run must not mix column layouts in one file.
+        std::ifstream in(file_);
+        std::string first;
+        std::getline(in, first);
+        if (first != header)
+            throw RunError(fmt::format("{}: cannot append, its header '{}' differs from '{}'",
+                                       file_.string(), first, header));
+    }
+    os_.open(file_, continuing ? std::ios::app : std::ios::trunc);
+    if (!os_) throw RunError(fmt::format("cannot open {} for writing", file_.string()));
+    if (!continuing) os_ << header << '\n' << std::flush;
+    if (!os_) throw RunError(fmt::format("writing {} failed", file_.string()));
+}
+
+void CsvSeriesWriter::row(std::span<const double> values) {
+    if (values.size() != columns_.size())
+        throw RunError(fmt::format("{}: row with {} values for {} columns", file_.string(),
+                                   values.size(), columns_.size()));
+    fmt::memory_buffer buf;
+    fmt::format_to(std::back_inserter(buf), "{:.10g}\n", fmt::join(values, ","));
+    os_.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+    os_.flush();
+    if (!os_) throw RunError(fmt::format("writing {} failed (disk full?)", file_.string()));
+}
+
+} // namespace drydem

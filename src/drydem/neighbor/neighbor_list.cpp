@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/neighbor/neighbor_list.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+
+namespace drydem {
+
+void NeighborList::bin(const ParticleStore& p, const Box& box, double cell_size) {
+    Grid& g = grid_;
+    const std::size_t n = p.size();
+    g.nx = std::max(1, int(box.lx / cell_size));
+    g.ny = std::max(1, int(box.ly / cell_size));
+    g.cx = box.lx / g.nx;
+    g.cy = box.ly / g.ny;
+    double zlo = INFINITY, zhi = -INFINITY;
+    for (std::size_t i = 0; i < n; ++i) {
+        zlo = std::min(zlo, p.position[i].z);
+        zhi = std::max(zhi, p.position[i].z);
+    }
+    if (n == 0) zlo = zhi = 0.0;
+    if (!std::isfinite(zlo) || !std::isfinite(zhi))
+        throw RunError("neighbor search: a particle position is not finite");
+    // Cap the number of z layers so that one stray particle cannot exhaust memory; wider cells
+    // stay correct because the stencil is computed from the actual cell size.
+    const double max_layers = std::max(16.0, 4.0e6 / (double(g.nx) * g.ny));
+    g.nz = int(std::min(max_layers, std::floor((zhi - zlo) / cell_size) + 1.0));
+    g.cz = std::max(cell_size, (zhi - zlo) / g.nz * (1.0 + 1e-12));
+    g.zlo = zlo;
+    const std::size_t ncell = std::size_t(g.nx) * g.ny * g.nz;
+    g.cell_start.assign(ncell + 1, 0);
+    g.cell_of.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& x = p.position[i];
+        const int ix = std::min(g.nx - 1, std::max(0, int(x.x / g.cx)));
+        const int iy = std::min(g.ny - 1, std::max(0, int(x.y / g.cy)));
+        const int iz = std::min(g.nz - 1, std::max(0, int((x.z - zlo) / g.cz)));
+        g.cell_of[i] = std::uint32_t(g.index(ix, iy, iz));
+        ++g.cell_start[g.cell_of[i] + 1];
+    }
+    for (std::size_t c = 0; c < ncell; ++c) g.cell_start[c + 1] += g.cell_start[c];
+    g.cell_items.resize(n);
+    std::vector<std::uint32_t>& fill = order_;
+    fill.assign(g.cell_start.begin(), g.cell_start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) g.cell_items[fill[g.cell_of[i]]++] = std::uint32_t(i);
+}
+
+void NeighborList::sort_by_cell(ParticleStore& p) {
+    // cell_items is a counting sort of the particles by cell: use it as the new storage order.
+    std::vector<std::uint32_t> order(grid_.cell_items.begin(), grid_.cell_items.end());
+    p.permute(order);
+}
+
+void NeighborList::carry_history(const ParticleStore& p) {
+    if (old_offset_.empty()) return;
+    const std::size_t n = p.size();
+#pragma omp parallel for schedule(dynamic, 512)
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t orow = old_row_of_id_[p.id[i]];
+        if (orow == UINT32_MAX) continue;
+        const std::uint32_t ob = old_offset_[orow], oe = old_offset_[orow + 1];
+        bool any = false;
+        for (std::uint32_t s = ob; s < oe && !any; ++s) any = norm2(old_history_[s]) > 0.0;
+        if (!any) continue;
+        for (std::uint32_t s = offset_[i]; s < offset_[i + 1]; ++s) {
+            const std::uint32_t pid = p.id[partner_[s]];
+            for (std::uint32_t o = ob; o < oe; ++o)
+                if (old_partner_id_[o] == pid) {
+                    history_[s] = old_history_[o];
+                    break;
+                }
+        }
+    }
+}
+
+std::vector<NeighborList::Entry> NeighborList::history_entries(const ParticleStore& p) const {
+    std::vector<Entry> out;
+    for (std::size_t i = 0; i + 1 < offset_.size(); ++i)
+        for (std::uint32_t s = offset_[i]; s < offset_[i + 1]; ++s)
+            if (norm2(history_[s]) > 0.0) out.push_back({p.id[i], p.id[partner_[s]], history_[s]});
+    return out;
+}
+
+void NeighborList::restore_history(const ParticleStore& p, const std::vector<Entry>& entries) {
+    std::vector<std::uint32_t> row_of_id;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.id[i] >= row_of_id.size()) row_of_id.resize(p.id[i] + 1, UINT32_MAX);
+        row_of_id[p.id[i]] = std::uint32_t(i);
+    }
+    for (const Entry& e : entries) {
+        if (e.owner_id >= row_of_id.size() || row_of_id[e.owner_id] == UINT32_MAX)
+            throw InputError(fmt::format("contact history names unknown particle id {}", e.owner_id));
+        const std::uint32_t i = row_of_id[e.owner_id];
+        bool found = false;
+        for (std::uint32_t s = offset_[i]; s < offset_[i + 1] && !found; ++s)
+            if (p.id[partner_[s]] == e.partner_id) {
+                history_[s] = e.history;
+                found = true;
+            }
+        if (!found)
+            throw InputError(fmt::format("contact history pair ({}, {}) is not in the neighbor list",
+                                         e.owner_id, e.partner_id));
+    }
+}
+
+} // namespace drydem

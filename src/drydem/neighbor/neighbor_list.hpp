@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: MIT
+// Half Verlet list (CSR) with skin, built on a cell grid, with per-pair cut-offs and contact
+// history that survives rebuilds, re-sorting and periodic wrapping (model.md M-2.5, M-9.4).
+//
+// Size-aware search for a 1:8 size ratio: every pair is owned by its larger particle (ordering key
+// (radius, id)), so a particle only searches for partners no larger than itself. The grid is sized
+// for the smallest particles (CB-CB, 2.25 µm + skin); a CB then scans 27 cells, and only the few
+// large NCM spheres scan the wide stencil their 17 µm reach needs. No global 17 µm cut-off.
+#pragma once
+#include "drydem/core/box.hpp"
+#include "drydem/core/particles.hpp"
+#include "drydem/core/vec3.hpp"
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace drydem {
+
+class NeighborList {
+public:
+    /// skin: extra distance beyond every pair's interaction range; rebuild when some particle moved
+    /// more than skin/2 since the last build.
+    explicit NeighborList(double skin = 0.1e-6) : skin_(skin) {}
+
+    [[nodiscard]] double skin() const { return skin_; }
+    [[nodiscard]] std::size_t owners() const { return offset_.empty() ? 0 : offset_.size() - 1; }
+    [[nodiscard]] std::size_t pairs() const { return partner_.size(); }
+    [[nodiscard]] std::uint32_t begin(std::size_t i) const { return offset_[i]; }
+    [[nodiscard]] std::uint32_t end(std::size_t i) const { return offset_[i + 1]; }
+    [[nodiscard]] std::uint32_t partner(std::uint32_t slot) const { return partner_[slot]; }
+    /// Tangential spring of the contact in this slot (zero when not in contact).
+    [[nodiscard]] Vec3& history(std::uint32_t slot) { return history_[slot]; }
+    [[nodiscard]] const Vec3& history(std::uint32_t slot) const { return history_[slot]; }
+    [[nodiscard]] std::uint64_t builds() const { return builds_; }
+
+    /// True when the pair (i, j) is owned by i: i is larger, ties broken by id (stable under
+    /// re-sorting, so a pair's history always lives in the same owner's row).
+    static bool owns(double r_i, std::uint32_t id_i, double r_j, std::uint32_t id_j) {
+        return r_j < r_i || (r_j == r_i && id_j < id_i);
+    }
+
+    /// Largest displacement (squared) since the last build decides the rebuild (skin/2).
+    [[nodiscard]] bool needs_rebuild(double max_displacement2) const {
+        return offset_.empty() || max_displacement2 > 0.25 * skin_ * skin_;
+    }
+    [[nodiscard]] const std::vector<Vec3>& positions_at_build() const { return x_build_; }
+
+    /// Rebuilds the list. `range(i, j)` returns the pair's interaction range beyond contact [m];
+    /// `owner_range(i)` an upper bound of range(i, j) over every j that i can own. When `sort` is
+    /// set, particles are first reordered by cell for memory locality. Histories are carried over
+    /// by particle id.
+    template <class RangeFn, class OwnerRangeFn>
+    void build(ParticleStore& p, const Box& box, RangeFn&& range, OwnerRangeFn&& owner_range,
+               bool sort);
+
+    /// Histories keyed by (owner id, partner id), for checkpoints and tests.
+    struct Entry {
+        std::uint32_t owner_id, partner_id;
+        Vec3 history;
+    };
+    [[nodiscard]] std::vector<Entry> history_entries(const ParticleStore& p) const;
+    /// Restores histories (after a build) from entries, e.g. from a checkpoint.
+    void restore_history(const ParticleStore& p, const std::vector<Entry>& entries);
+
+private:
+    struct Grid {
+        int nx = 1, ny = 1, nz = 1;
+        double cx = 1, cy = 1, cz = 1, zlo = 0;
+        std::vector<std::uint32_t> cell_start, cell_items, cell_of;
+        [[nodiscard]] int index(int ix, int iy, int iz) const { return (iz * ny + iy) * nx + ix; }
+    };
+    void bin(const ParticleStore& p, const Box& box, double cell_size);
+    void sort_by_cell(ParticleStore& p);
+    void carry_history(const ParticleStore& p);
+
+    double skin_;
+    std::uint64_t builds_ = 0;
+    Grid grid_;
+    std::vector<std::uint32_t> offset_, partner_;
+    std::vector<Vec3> history_;
+    std::vector<Vec3> x_build_;
+    // Previous list, keyed by ids, for carrying histories over.
+    std::vector<std::uint32_t> old_offset_, old_partner_id_, old_row_of_id_;
+    std::vector<Vec3> old_history_;
+    std::vector<std::uint32_t> order_;
+};
+
+template <class RangeFn, class OwnerRangeFn>
+void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
+                         OwnerRangeFn&& owner_range, bool sort) {
+    const std::size_t n = p.size();
+    // Keep the previous list, keyed by ids, to carry contact histories over.
+    old_offset_.swap(offset_);
+    old_history_.swap(history_);
+    old_partner_id_.resize(partner_.size());
+    for (std::size_t s = 0; s < partner_.size(); ++s) old_partner_id_[s] = p.id[partner_[s]];
+    std::uint32_t max_id = 0;
+    for (std::size_t i = 0; i < n; ++i) max_id = std::max(max_id, p.id[i]);
+    old_row_of_id_.assign(std::size_t(max_id) + 1, UINT32_MAX);
+    if (!old_offset_.empty())
+        for (std::size_t i = 0; i < n; ++i) old_row_of_id_[p.id[i]] = std::uint32_t(i);
+
+    // Search radius of each owner: its own reach to partners no larger than itself.
+    double cell = 0.0;
+    {
+        double smallest = INFINITY;
+        for (std::size_t i = 0; i < n; ++i)
+            smallest = std::min(smallest, 2.0 * p.radius[i] + owner_range(i));
+        cell = std::isfinite(smallest) ? smallest + skin_ : 1e-6;
+    }
+    bin(p, box, cell);
+    if (sort) {
+        sort_by_cell(p);
+        bin(p, box, cell);
+    }
+
+    offset_.assign(n + 1, 0);
+    const Grid& g = grid_;
+    auto visit = [&](std::size_t i, auto&& on_pair) {
+        const Vec3 xi = p.position[i];
+        const double ri = p.radius[i];
+        const std::uint32_t idi = p.id[i];
+        const double reach = 2.0 * ri + owner_range(i) + skin_;
+        const int wx = int(std::ceil(reach / g.cx)), wy = int(std::ceil(reach / g.cy)),
+                  wz = int(std::ceil(reach / g.cz));
+        const std::uint32_t c = g.cell_of[i];
+        const int ix = int(c % g.nx), iy = int((c / g.nx) % g.ny), iz = int(c / (g.nx * g.ny));
+        // A stencil wider than the periodic grid visits every column once.
+        const int x0 = 2 * wx + 1 >= g.nx ? 0 : ix - wx, x1 = 2 * wx + 1 >= g.nx ? g.nx - 1 : ix + wx;
+        const int y0 = 2 * wy + 1 >= g.ny ? 0 : iy - wy, y1 = 2 * wy + 1 >= g.ny ? g.ny - 1 : iy + wy;
+        const int z0 = std::max(0, iz - wz), z1 = std::min(g.nz - 1, iz + wz);
+        for (int kz = z0; kz <= z1; ++kz)
+            for (int ky = y0; ky <= y1; ++ky) {
+                const int cy = ((ky % g.ny) + g.ny) % g.ny;
+                for (int kx = x0; kx <= x1; ++kx) {
+                    const int cx = ((kx % g.nx) + g.nx) % g.nx;
+                    const int cc = g.index(cx, cy, kz);
+                    for (std::uint32_t k = g.cell_start[cc]; k < g.cell_start[cc + 1]; ++k) {
+                        const std::uint32_t j = g.cell_items[k];
+                        if (!owns(ri, idi, p.radius[j], p.id[j])) continue;
+                        const Vec3 d = box.minimum_image(xi, p.position[j]);
+                        const double cut = ri + p.radius[j] + range(i, j) + skin_;
+                        if (norm2(d) < cut * cut) on_pair(j);
+                    }
+                }
+            }
+    };
+    // Two passes (count, fill) keep the build parallel and the row order deterministic.
+#pragma omp parallel for schedule(dynamic, 256)
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint32_t count = 0;
+        visit(i, [&](std::uint32_t) { ++count; });
+        offset_[i + 1] = count;
+    }
+    for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
+    partner_.resize(offset_[n]);
+    history_.assign(offset_[n], Vec3{});
+#pragma omp parallel for schedule(dynamic, 256)
+    for (std::size_t i = 0; i < n; ++i) {
+        std::uint32_t s = offset_[i];
+        visit(i, [&](std::uint32_t j) { partner_[s++] = j; });
+    }
+    carry_history(p);
+    x_build_ = p.position;
+    ++builds_;
+}
+
+} // namespace drydem

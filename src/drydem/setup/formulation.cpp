@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/setup/formulation.hpp"
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace drydem {
+
+namespace {
+double sphere_volume(double d) { return std::numbers::pi * d * d * d / 6.0; }
+} // namespace
+
+FilmRecipe make_recipe(const Config& c) {
+    FilmRecipe r;
+    r.base_area = c.box_x * c.box_y;
+    // Eq. 4: density of the dry solids from the mass fractions.
+    r.solids_density = 1.0 / (c.ncm_mass_fraction / c.ncm_density +
+                              c.pvdf_mass_fraction / c.pvdf_density +
+                              c.cb_mass_fraction / c.cb_density);
+    // Eq. 3 (I-4: the prefactor is the solids mass fraction x_s).
+    const double xs = c.solids_mass_fraction, xf = 1.0 - xs;
+    r.wet_film_height = c.areal_loading / xs * (xf / c.solvent_density + xs / r.solids_density);
+    r.dry_mass = c.areal_loading * r.base_area;
+    // M-1.2: NCM classes of equal volume.
+    r.ncm_volume = c.ncm_mass_fraction * r.dry_mass / c.ncm_density;
+    const double per_class = r.ncm_volume / double(c.ncm_diameters.size());
+    for (double d : c.ncm_diameters) {
+        SizeClass s;
+        s.diameter = d;
+        s.density = c.ncm_density;
+        s.count_exact = per_class / sphere_volume(d);
+        s.count = int(std::lround(s.count_exact));
+        r.species.push_back(s);
+    }
+    // M-1.3: CB count from the agglomerate envelope volume, density carbon + pore NMP.
+    r.cb_carbon_mass = c.cb_mass_fraction * r.dry_mass;
+    r.cb_envelope_volume = r.cb_carbon_mass / (c.cb_density * (1.0 - c.cb_porosity));
+    r.cb_effective_density =
+        (1.0 - c.cb_porosity) * c.cb_density + c.cb_porosity * c.solvent_density;
+    SizeClass cb;
+    cb.diameter = c.cb_diameter;
+    cb.density = r.cb_effective_density;
+    cb.count_exact = r.cb_envelope_volume / sphere_volume(c.cb_diameter);
+    cb.count = int(std::lround(cb.count_exact));
+    cb.is_cb = true;
+    r.species.push_back(cb);
+    r.pvdf_mass = c.pvdf_mass_fraction * r.dry_mass;
+    return r;
+}
+
+int FilmRecipe::particle_count() const {
+    int n = 0;
+    for (const SizeClass& s : species) n += s.count;
+    return n;
+}
+
+double FilmRecipe::largest_diameter() const {
+    double d = 0.0;
+    for (const SizeClass& s : species) d = std::max(d, s.diameter);
+    return d;
+}
+
+double FilmRecipe::realised_dry_mass() const {
+    double m = pvdf_mass;
+    for (const SizeClass& s : species) {
+        // CB particles carry pore solvent: only their carbon counts as dry mass.
+        const double per_particle =
+            s.is_cb ? cb_carbon_mass / std::max(1e-300, s.count_exact) : s.density * sphere_volume(s.diameter);
+        m += per_particle * s.count;
+    }
+    return m;
+}
+
+CoatingDensity coating_density(double areal_mass, double thickness, double solids_density) {
+    const double rho = areal_mass / thickness;
+    return {rho, 1.0 - rho / solids_density};
+}
+
+} // namespace drydem
