@@ -249,7 +249,8 @@ TEST(ParticleIo, ErrorsNameFileAndLine) {
     EXPECT_NE(msg.find("e.data:5:"), std::string::npos) << msg;
     EXPECT_NE(msg.find("atom_style 'atomic'"), std::string::npos) << msg;
 
-    msg = error_of(write_text(dir / "f.data", "title\n\n2 atoms\n\nAtoms\n\n1 1 1e-6 1000 0 0 0\n"));
+    msg = error_of(
+        write_text(dir / "f.data", "title\n\n2 atoms\n\nAtoms\n\n1 1 1e-6 1000 0 0 0\n"));
     EXPECT_NE(msg.find("header says 2 atoms"), std::string::npos) << msg;
 
     msg = error_of(write_text(dir / "g.dump", "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n3\n"

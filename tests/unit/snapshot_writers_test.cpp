@@ -71,9 +71,9 @@ TEST(SnapshotWriters, VtpHasOneVertexPerParticleAndTimes) {
     // Balanced tags: a cheap well-formedness check.
     EXPECT_EQ(count(xml, "<DataArray"), count(xml, "</DataArray>"));
     EXPECT_EQ(count(xml, "<DataArray"), 3u + 7u + 1u + 2u); // field, point, points, verts
-    for (const auto* tag : {"PolyData", "FieldData", "Piece", "PointData", "Points", "Verts"})
-        EXPECT_EQ(count(xml, std::string("<") + tag + ">") + count(xml, std::string("<") + tag + " "),
-                  count(xml, std::string("</") + tag + ">"))
+    for (const std::string tag : {"PolyData", "FieldData", "Piece", "PointData", "Points", "Verts"})
+        EXPECT_EQ(count(xml, "<" + tag + ">") + count(xml, "<" + tag + " "),
+                  count(xml, "</" + tag + ">"))
             << tag;
     EXPECT_EQ(data_array(xml, "TimeValue"), std::vector<double>{1.0});
     EXPECT_EQ(data_array(xml, "sim_time_s"), std::vector<double>{1e-7});

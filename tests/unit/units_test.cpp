@@ -105,7 +105,7 @@ TEST(Units, DimensionMismatchNamesKeyValueAndWhatIsAllowed) {
 
 TEST(Units, MalformedValuesThrow) {
     for (const char* bad : {"abc um", "", "   ", "um", "6.5 foo", "6.5 m^", "6.5 m^x", "6.5 m/",
-                            "6.5 (m", "6.5 m)", "nan", "inf m", "1e400 m", "6.5 m 2", "1..2 m",
+                            "6.5 (m", "6.5 m)", "nan", "inf m", "1e400 m", "6.5 m 2", "6.5 m 1", "1..2 m",
                             "80 degC/s", "80 degC^2", "80 degC K", "6.5 um,"}) {
         const auto msg = error_of(bad, D::length, "film.particle_diameter");
         EXPECT_FALSE(msg.empty()) << "accepted: '" << bad << "'";

@@ -115,27 +115,45 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     sim.compute_forces();
 
     // --- stability guard (M-9.2) ---
+    // The explicit damping modes (lubrication, drag) are stable while Δt λ_max < 2. "adapt" lowers
+    // the step to 1.5/λ_max when Δt λ_max exceeds 1.8 and returns to run.time_step once that is
+    // safe again (never above it); "refuse" stops the run; "warn" only warns.
+    double warned_lambda = 0.0, dt_min = c.time_step;
     auto guard = [&](bool at_start) {
         const auto b = sim.damping_bound();
+        const double dt = sim.settings().dt, lambda = b.dt_lambda / dt;
+        if (c.stability_guard == "adapt") {
+            const double target = std::min(c.time_step, 1.5 / lambda);
+            if (b.dt_lambda > 1.8 || dt < c.time_step) {
+                if (target < dt)
+                    log->debug("step {}: dt {:.3g} -> {:.3g} s (dt*Lambda was {:.3g} at particle {})",
+                               sim.step_count(), dt, target, b.dt_lambda, b.particle_id);
+                sim.set_time_step(target);
+                dt_min = std::min(dt_min, target);
+            }
+            return lambda * sim.settings().dt;
+        }
         if (b.dt_lambda >= 2.0) {
             const std::string msg = fmt::format(
                 "time step {:.3g} s is above the explicit stability bound of the damping forces: "
-                "dt*Lambda = {:.3g} >= 2 at particle {} (model.md M-9.2); lower run.time_step",
-                c.time_step, b.dt_lambda, b.particle_id);
+                "dt*Lambda = {:.3g} >= 2 at particle {} (model.md M-9.2); lower run.time_step or "
+                "use numerics.stability_guard = \"adapt\"",
+                dt, b.dt_lambda, b.particle_id);
             if (c.stability_guard == "refuse") {
                 if (at_start) throw InputError(msg);
                 throw RunError(msg);
             }
             log->warn("{}", msg);
-        } else if (b.dt_lambda > 1.5) {
+        } else if (b.dt_lambda > 1.5 && b.dt_lambda > warned_lambda + 0.05) {
+            warned_lambda = b.dt_lambda; // warn again only when it keeps rising
             log->warn("time step {:.3g} s is close to the damping stability bound: dt*Lambda = "
-                      "{:.3g} at particle {}", c.time_step, b.dt_lambda, b.particle_id);
+                      "{:.3g} at particle {}", dt, b.dt_lambda, b.particle_id);
         }
         return b.dt_lambda;
     };
     double dt_lambda = guard(true);
     log->info("threads {}, dt = {:.3g} s (scaled), dt*Lambda = {:.3g} (stable < 2), level speeds "
-              "{} m/s (scaled)", sim.threads(), c.time_step, dt_lambda,
+              "{} m/s (scaled)", sim.threads(), sim.settings().dt, dt_lambda,
               fmt::join(scaled.level_speeds_scaled, ", "));
 
     // --- outputs ---
@@ -143,7 +161,7 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                            {"process_time_s", "sim_time_s", "step", "liquid_level_um",
                             "film_thickness_um", "film_top_p99_um", "kinetic_energy_J", "contacts",
                             "wall_contacts", "max_overlap_rel", "particles_at_level",
-                            "dt_lambda", "zone"});
+                            "dt_lambda", "time_step_s", "zone"});
     PvdWriter pvd(opt.output_dir / "snapshots" / "particles.pvd");
     std::ofstream dump(opt.output_dir / "snapshots" / "dump.lammpstrj");
     int frame = 0;
@@ -169,13 +187,14 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                                  st.max_overlap_rel,
                                  double(particles_cutting_level(sim.particles(), sim.liquid_level())),
                                  dt_lambda,
+                                 sim.settings().dt,
                                  double(schedule.zone(sim.time()) + 1)};
         series.row(values);
     };
 
     DryingResult result;
     nlohmann::json summary;
-    bool final_found = false, warned_c21 = false;
+    bool final_found = false, warned_c21 = false, warned_overlap = false;
     double t_end = INFINITY;
     const double t_max = scaled.sim_time(c.max_process_time);
     double next_row = 0.0, next_snapshot = 0.0;
@@ -201,6 +220,13 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                               "{:.4g} um above it; final thickness taken there", final_gap * 1e6);
                 log->info("final thickness {:.4f} um at process time {:.3f} s; relaxing for {} s",
                           top * 1e6, result.process_time_final, c.relaxation);
+            }
+            if (!warned_overlap && sim.stats().max_overlap_rel > 0.25) {
+                warned_overlap = true;
+                log->warn("overlaps exceed 25 % of the smaller radius at process time {:.3f} s "
+                          "(max {:.3f}): the scaled capillary and van der Waals forces press the "
+                          "particles harder than their contact stiffness resists (model.md C-9)",
+                          scaled.process_time(t), sim.stats().max_overlap_rel);
             }
             if (sim.neighbors().builds() != builds_seen) {
                 builds_seen = sim.neighbors().builds();
@@ -284,6 +310,7 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     summary["box_um"] = {c.box_x * 1e6, c.box_y * 1e6};
     summary["scaling"] = to_json(scaled);
     summary["time_step_s"] = c.time_step;
+    summary["time_step_min_s"] = dt_min;
     summary["steps"] = result.steps;
     summary["seed"] = c.seed;
     summary["threads"] = sim.threads();

@@ -17,7 +17,7 @@ struct EngineSettings {
     double skin = 0.1e-6;        ///< neighbor skin [m] (M-9.4)
     int threads = 0;             ///< OpenMP threads; 0 = runtime default
     int sort_every = 10;         ///< spatial re-sort every this many rebuilds (0 = never)
-    double overlap_limit = 0.5;  ///< stop when an overlap exceeds this fraction of the smaller radius
+    double overlap_limit = 1.0;  ///< stop when an overlap exceeds this fraction of the smaller radius
 };
 
 /// Per-step diagnostics of the last force evaluation and kick.
@@ -58,6 +58,8 @@ public:
     [[nodiscard]] double time() const { return time_; }
     [[nodiscard]] std::int64_t step_count() const { return step_; }
     void set_clock(std::int64_t step, double time) { step_ = step; time_ = time; }
+    /// Changes Δt between steps (the stability guard lowers it in dense packings, M-9.2).
+    void set_time_step(double dt) { settings_.dt = dt; }
     [[nodiscard]] const StepStats& stats() const { return stats_; }
     [[nodiscard]] int threads() const { return threads_; }
 
@@ -65,11 +67,12 @@ public:
     [[nodiscard]] double kinetic_energy() const;
     /// Total linear momentum [kg m/s].
     [[nodiscard]] Vec3 momentum() const;
-    /// Largest Δt·Λ_i of the explicit damping modes (Gershgorin bound, M-9.2) with the current
-    /// neighbor list; stability needs < 2. Also returns the particle id where it is largest.
+    /// Δt λ_max of the explicit damping modes (M-9.2) with the current neighbor list; stability
+    /// needs < 2. Also the Gershgorin bound and the particle id where it is largest.
     struct DampingBound {
-        double dt_lambda = 0.0;
-        std::uint32_t particle_id = 0;
+        double dt_lambda = 0.0;   ///< Δt λ_max (power iteration where Gershgorin exceeds 1.5)
+        double gershgorin = 0.0;  ///< Δt max_i Λ_i, the cheap upper bound
+        std::uint32_t particle_id = 0; ///< where Λ_i is largest
     };
     [[nodiscard]] DampingBound damping_bound() const;
 

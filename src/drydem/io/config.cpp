@@ -93,7 +93,7 @@ const std::vector<Field>& schema() {
         {"numerics.skin", &Config::skin, D::length, 0, 10e-6, true},
         {"numerics.overlap_limit", &Config::overlap_limit, D::dimensionless, 0, 2, true},
         {"numerics.stability_guard", &Config::stability_guard, D::dimensionless, -inf, inf, false,
-         {"refuse", "warn"}},
+         {"adapt", "refuse", "warn"}},
         {"numerics.sort_every", &Config::sort_every, D::dimensionless, 0, 1e6},
         {"output.timeseries_every", &Config::timeseries_every, D::time, 0, inf, true},
         {"output.snapshot_every", &Config::snapshot_every, D::time, 0, inf},

@@ -79,8 +79,8 @@ struct Config {
 
     // [numerics]
     double skin = 0.1e-6;
-    double overlap_limit = 0.5;
-    std::string stability_guard = "refuse"; ///< "refuse" | "warn" (M-9.2)
+    double overlap_limit = 1.0;
+    std::string stability_guard = "adapt"; ///< "adapt" | "refuse" | "warn" (M-9.2)
     int sort_every = 10;
 
     // [output]

@@ -84,8 +84,9 @@ fluid_forces_above_level = "keep"  # C-19
 
 [numerics]
 skin = "0.1 um"
-overlap_limit = 0.5              # stop when an overlap exceeds this fraction of the smaller radius
-stability_guard = "refuse"       # refuse | warn when dt exceeds the damping bound (M-9.2)
+overlap_limit = 1.0              # stop (runaway overlap) when an overlap reaches this fraction of the smaller radius
+stability_guard = "adapt"        # adapt: lower dt where dt*lambda_max > 1.8 (never above time_step);
+                                 # refuse: stop; warn: only warn (M-9.2)
 sort_every = 10                  # spatial re-sort every N neighbor rebuilds
 
 [output]

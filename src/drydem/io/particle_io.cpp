@@ -180,8 +180,9 @@ void read_data(LineReader& in, ParticleFile& out) {
         // One section: keyword line, then body lines up to the next keyword.
         const auto hash = line.find('#');
         const std::string name(trim(std::string_view(line).substr(0, hash)));
-        const auto style =
-            hash == std::string::npos ? std::string_view{} : trim(std::string_view(line).substr(hash + 1));
+        const auto style = hash == std::string::npos
+                               ? std::string_view{}
+                               : trim(std::string_view(line).substr(hash + 1));
         const bool atoms = name == "Atoms";
         if (atoms && !style.empty() && style != "sphere" && style != "granular")
             in.fail(fmt::format("atom_style '{}' is not supported; write the data file with "
@@ -397,7 +398,9 @@ void write_particles_csv(const fs::path& file, const ParticleStore& p) {
         fmt::format_to(std::back_inserter(buf), "{},{},{},{},{},{},{}\n", p.id[i],
                        int(p.species[i]) + 1, p.radius[i], p.density[i], x.x, x.y, x.z);
     }
-    write_file_atomically(file, [&](std::ostream& os) { os.write(buf.data(), std::streamsize(buf.size())); });
+    write_file_atomically(file, [&](std::ostream& os) {
+        os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+    });
 }
 
 } // namespace drydem

@@ -63,19 +63,30 @@ std::optional<std::string> attribute(std::string_view tag, std::string_view name
     return xml_unescape(tag.substr(v, e - v));
 }
 
-// 9 significant digits: finer than any length in the model (1e-14 m at 100 um) and half the size
+// 9 significant digits: finer than any length in the model (1e-13 m at 100 um) and half the size
 // of full precision; frames are for looking at, final.csv and checkpoints carry exact values.
-template <class Get>
+// `put(out, i)` writes the components of tuple i.
+template <class Put>
 void vtp_array(Out out, std::string_view type, std::string_view name, int components,
-               std::size_t n, Get get) {
+               std::size_t n, Put put) {
     fmt::format_to(out, "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
                         "format=\"ascii\">\n",
                    type, name, components);
-    for (std::size_t i = 0; i < n; ++i) fmt::format_to(out, "          {}\n", get(i));
+    for (std::size_t i = 0; i < n; ++i) {
+        put(out, i);
+        fmt::format_to(out, "\n");
+    }
     fmt::format_to(out, "        </DataArray>\n");
 }
 
-std::string vec(const Vec3& v) { return fmt::format("{:.9g} {:.9g} {:.9g}", v.x, v.y, v.z); }
+auto scalar(const std::vector<double>& v, double scale = 1.0) {
+    return [&v, scale](Out out, std::size_t i) { fmt::format_to(out, "{:.9g}", scale * v[i]); };
+}
+auto vec3s(const std::vector<Vec3>& v) {
+    return [&v](Out out, std::size_t i) {
+        fmt::format_to(out, "{:.9g} {:.9g} {:.9g}", v[i].x, v[i].y, v[i].z);
+    };
+}
 
 } // namespace
 
@@ -90,32 +101,32 @@ void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, do
                         "    <FieldData>\n");
     // TimeValue is the name ParaView looks for; process time is what the user compares with the
     // dryer, the scaled simulation time is kept next to it.
-    for (const auto& [name, value] : {std::pair<std::string_view, double>{"TimeValue", process_time},
-                                      {"process_time_s", process_time},
-                                      {"sim_time_s", sim_time}})
+    using Field = std::pair<std::string_view, double>;
+    for (const auto& [name, value] : {Field{"TimeValue", process_time},
+                                      Field{"process_time_s", process_time},
+                                      Field{"sim_time_s", sim_time}})
         fmt::format_to(out, "      <DataArray type=\"Float64\" Name=\"{}\" NumberOfTuples=\"1\" "
                             "format=\"ascii\">{}</DataArray>\n",
                        name, value);
     fmt::format_to(out, "    </FieldData>\n"
-                        "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
-                        "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+                        "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" "
+                        "NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
                         "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n",
                    n);
-    vtp_array(out, "UInt32", "id", 1, n, [&](auto i) { return fmt::format("{}", p.id[i]); });
+    vtp_array(out, "UInt32", "id", 1, n, [&](Out o, auto i) { fmt::format_to(o, "{}", p.id[i]); });
     vtp_array(out, "Int32", "type", 1, n,
-              [&](auto i) { return fmt::format("{}", int(p.species[i]) + 1); });
-    vtp_array(out, "Float64", "radius", 1, n,
-              [&](auto i) { return fmt::format("{:.9g}", p.radius[i]); });
-    vtp_array(out, "Float64", "diameter", 1, n,
-              [&](auto i) { return fmt::format("{:.9g}", 2.0 * p.radius[i]); });
-    vtp_array(out, "Float64", "velocity", 3, n, [&](auto i) { return vec(p.velocity[i]); });
-    vtp_array(out, "Float64", "omega", 3, n, [&](auto i) { return vec(p.omega[i]); });
-    vtp_array(out, "Float64", "force", 3, n, [&](auto i) { return vec(p.force[i]); });
+              [&](Out o, auto i) { fmt::format_to(o, "{}", int(p.species[i]) + 1); });
+    vtp_array(out, "Float64", "radius", 1, n, scalar(p.radius));
+    vtp_array(out, "Float64", "diameter", 1, n, scalar(p.radius, 2.0));
+    vtp_array(out, "Float64", "velocity", 3, n, vec3s(p.velocity));
+    vtp_array(out, "Float64", "omega", 3, n, vec3s(p.omega));
+    vtp_array(out, "Float64", "force", 3, n, vec3s(p.force));
     fmt::format_to(out, "      </PointData>\n      <Points>\n");
-    vtp_array(out, "Float64", "Points", 3, n, [&](auto i) { return vec(p.position[i]); });
+    vtp_array(out, "Float64", "Points", 3, n, vec3s(p.position));
     fmt::format_to(out, "      </Points>\n      <Verts>\n");
-    vtp_array(out, "Int64", "connectivity", 1, n, [](auto i) { return fmt::format("{}", i); });
-    vtp_array(out, "Int64", "offsets", 1, n, [](auto i) { return fmt::format("{}", i + 1); });
+    vtp_array(out, "Int64", "connectivity", 1, n,
+              [](Out o, auto i) { fmt::format_to(o, "{}", i); });
+    vtp_array(out, "Int64", "offsets", 1, n, [](Out o, auto i) { fmt::format_to(o, "{}", i + 1); });
     fmt::format_to(out, "      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n");
     write_file_atomically(file, [&](std::ostream& os) {
         os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
@@ -131,7 +142,8 @@ void PvdWriter::write() const {
     fmt::memory_buffer buf;
     const Out out(buf);
     fmt::format_to(out, "<?xml version=\"1.0\"?>\n"
-                        "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                        "<VTKFile type=\"Collection\" version=\"0.1\" "
+                        "byte_order=\"LittleEndian\">\n"
                         "  <Collection>\n");
     for (const auto& e : entries_)
         fmt::format_to(out, "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",

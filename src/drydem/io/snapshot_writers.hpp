@@ -62,7 +62,9 @@ public:
 
     /// One row; must have as many values as there are columns (RunError otherwise).
     void row(std::span<const double> values);
-    void row(std::initializer_list<double> values) { row(std::span(values.begin(), values.size())); }
+    void row(std::initializer_list<double> values) {
+        row(std::span(values.begin(), values.size()));
+    }
     [[nodiscard]] const std::vector<std::string>& columns() const { return columns_; }
 
 private:

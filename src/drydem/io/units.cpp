@@ -213,7 +213,13 @@ private:
     bool at_factor_start() const {
         if (pos_ >= s_.size()) return false;
         const auto c = static_cast<unsigned char>(s_[pos_]);
-        return c == '(' || c == '1' || symbol_char();
+        return c == '(' || one_over() || symbol_char();
+    }
+    // "1/s": a literal 1 is only allowed as the numerator of a reciprocal.
+    bool one_over() const {
+        if (pos_ >= s_.size() || s_[pos_] != '1') return false;
+        const auto next = s_.find_first_not_of(" \t", pos_ + 1);
+        return next != std::string_view::npos && s_[next] == '/';
     }
     bool symbol_char() const {
         if (pos_ >= s_.size()) return false;
@@ -252,7 +258,7 @@ private:
             u = expr();
             if (pos_ >= s_.size() || s_[pos_] != ')') throw UnitSyntax("missing ')'");
             ++pos_;
-        } else if (pos_ < s_.size() && s_[pos_] == '1') { // "1/s"
+        } else if (one_over()) {
             ++pos_;
         } else {
             const auto b = pos_;
@@ -265,8 +271,8 @@ private:
             const auto found = lookup(name);
             if (!found)
                 throw UnitSyntax(fmt::format(
-                    "unknown unit '{}' (known: m g s min h K degC rad deg Hz N Pa bar P J eV W L %, "
-                    "with prefixes f p n u µ m c k M G T)",
+                    "unknown unit '{}' (known: m g s min h K degC rad deg Hz N Pa bar P J eV W L "
+                    "%, with prefixes f p n u µ m c k M G T)",
                     name));
             u = *found;
             ++factors_;
@@ -291,7 +297,8 @@ private:
         auto t = s_.substr(b, pos_ - b);
         if (t.starts_with('+')) t.remove_prefix(1);
         std::from_chars(t.data(), t.data() + t.size(), e);
-        if (e == 0 || std::abs(e) > 9) throw UnitSyntax(fmt::format("exponent {} is not allowed", t));
+        if (e == 0 || std::abs(e) > 9)
+            throw UnitSyntax(fmt::format("exponent {} is not allowed", t));
         return e;
     }
 };
@@ -339,7 +346,8 @@ std::optional<double> to_double(const Number& n, int pow10) {
     const auto text = fmt::format("{}e{}", n.mantissa, n.exp10 + pow10);
     double v = 0.0;
     const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc{} || p != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
+    if (ec != std::errc{} || p != text.data() + text.size() || !std::isfinite(v))
+        return std::nullopt;
     return v;
 }
 

@@ -40,7 +40,8 @@ enum class Dimension {
 /// Parses `text` (a number with an optional unit) into SI. No unit means the number is already SI
 /// ("2.5" → 2.5; for angles radians, for temperatures kelvin). "degC" is affine and only allowed
 /// on its own ("80 degC" → 353.15). Throws InputError naming `key`, the value and what is allowed.
-[[nodiscard]] double parse_quantity(std::string_view text, Dimension expected, std::string_view key);
+[[nodiscard]] double parse_quantity(std::string_view text, Dimension expected,
+                                    std::string_view key);
 
 /// Readable form of an SI value with a unit fitting its size, e.g. 6.5e-6 → "6.5 um",
 /// 1.801 (viscosity) → "1.801 Pa*s"; 6 significant digits. parse_quantity reads it back.

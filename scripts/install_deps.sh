@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs every build, test and benchmark dependency of DryDEM from Debian 12 packages.
+# Idempotent: installs only what is missing. Run as root (or with sudo available).
+set -euo pipefail
+packages=(
+  g++ cmake ninja-build pkg-config git
+  libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libomp-dev libtiff-dev
+  python3-matplotlib
+)
+# The peer benchmark (bench/peer_bench.sh) also needs LIGGGHTS and LAMMPS: pass --peers.
+if [[ "${1:-}" == "--peers" ]]; then packages+=(liggghts lammps openmpi-bin); fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "install_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install_deps: installing ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

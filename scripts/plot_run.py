@@ -1,0 +1,45 @@
+#!/usr/bin/python3
+"""Plots of a drydem run folder (Debian's python3-matplotlib): liquid level and film thickness vs
+process time (the paper's Fig. 5) with the final-thickness point, and the run's stability/contacts.
+usage: /usr/bin/python3 scripts/plot_run.py RUN_DIR"""
+import csv
+import json
+import os
+import sys
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt  # noqa: E402
+
+run = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(run, 'timeseries.csv'))))
+col = lambda k: [float(r[k]) for r in rows]  # noqa: E731
+summary = json.load(open(os.path.join(run, 'summary.json')))
+os.makedirs(os.path.join(run, 'plots'), exist_ok=True)
+
+t = col('process_time_s')
+fig, ax = plt.subplots(figsize=(6.4, 4.2))
+ax.plot(t, col('liquid_level_um'), label='liquid level')
+ax.plot(t, col('film_thickness_um'), label='film thickness (highest particle top)')
+ax.plot(t, col('film_top_p99_um'), ':', label='film top, 99th percentile')
+if summary.get('final_thickness_um') is not None:
+    ax.plot([summary['process_time_final_s']], [summary['final_thickness_um']], 'ko',
+            label=f"final thickness {summary['final_thickness_um']:.1f} um")
+ax.set_xlabel('process time / s')
+ax.set_ylabel('height / um')
+ax.set_title(f"{summary.get('name', '')}: {summary.get('areal_loading_mg_cm2', 0):.1f} mg/cm2")
+ax.legend()
+fig.tight_layout()
+fig.savefig(os.path.join(run, 'plots', 'film_thickness.png'), dpi=120)
+
+fig, ax = plt.subplots(2, 1, figsize=(6.4, 5.6), sharex=True)
+ax[0].plot(t, col('contacts'), label='particle contacts')
+ax[0].plot(t, col('particles_at_level'), label='particles cutting the level')
+ax[0].legend()
+ax[1].plot(t, col('max_overlap_rel'), label='max overlap / smaller radius')
+ax[1].plot(t, col('dt_lambda'), label='dt * lambda_max (stable < 2)')
+ax[1].set_xlabel('process time / s')
+ax[1].legend()
+fig.tight_layout()
+fig.savefig(os.path.join(run, 'plots', 'diagnostics.png'), dpi=120)
+print('plots written to', os.path.join(run, 'plots'))

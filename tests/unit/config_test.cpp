@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// Configuration parsing (interface.md "Config"): the embedded default equals Config{}, every
+// example parses, and bad input throws InputError naming the key, the value and what is allowed.
+#include "drydem/core/error.hpp"
+#include "drydem/io/config.hpp"
+#include <gtest/gtest.h>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+using namespace drydem;
+
+/// The message of the InputError thrown by load_config (fails the test when none is thrown).
+std::string input_error(std::string_view text, const std::vector<std::string>& overrides = {}) {
+    try {
+        load_config(text, "test.toml", overrides);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no InputError for: " << text;
+    return {};
+}
+
+// The embedded default (the paper's 20.1 mg/cm2 case, M-1 ... M-9) lists exactly Config{}'s values:
+// to_toml writes every schema field at 17 significant digits, so equal text = equal fields.
+TEST(Config, EmbeddedDefaultEqualsConfigDefaults) {
+    const Config parsed = load_config(default_config_toml(), "default");
+    EXPECT_EQ(to_toml(parsed), to_toml(Config{}));
+    EXPECT_EQ(parsed.name, "lippke2022-20.1mgcm2");
+    EXPECT_DOUBLE_EQ(parsed.areal_loading, 0.201);
+    EXPECT_DOUBLE_EQ(parsed.contact_angle, Config{}.contact_angle);
+    EXPECT_EQ(parsed.ncm_diameters, Config{}.ncm_diameters);
+}
+
+// Every shipped example is a valid configuration.
+TEST(Config, EveryExampleParses) {
+    const std::filesystem::path dir = std::filesystem::path(DRYDEM_SOURCE_DIR) / "examples";
+    int n = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".toml") continue;
+        ++n;
+        EXPECT_NO_THROW(load_config_file(entry.path().string())) << entry.path();
+    }
+    EXPECT_GE(n, 6); // quick, quick_hamaker_printed, paper_20.1 ... paper_35.4
+}
+
+// The four paper loadings (M-8.1, paper Table 2) and the C-12 sensitivity case.
+TEST(Config, PaperExamplesCarryTable2Rates) {
+    const std::filesystem::path dir = std::filesystem::path(DRYDEM_SOURCE_DIR) / "examples";
+    struct Case { const char* file; double loading, s1, s2; const char* name; };
+    for (const Case& k : {Case{"paper_20.1.toml", 0.201, 0.670e-6, 1.193e-6, "lippke2022-20.1mgcm2"},
+                          Case{"paper_25.2.toml", 0.252, 0.683e-6, 1.323e-6, "lippke2022-25.2mgcm2"},
+                          Case{"paper_30.3.toml", 0.303, 0.667e-6, 1.360e-6, "lippke2022-30.3mgcm2"},
+                          Case{"paper_35.4.toml", 0.354, 0.650e-6, 1.383e-6, "lippke2022-35.4mgcm2"}}) {
+        const Config c = load_config_file((dir / k.file).string());
+        EXPECT_EQ(c.name, k.name);
+        EXPECT_NEAR(c.areal_loading, k.loading, 1e-12);
+        EXPECT_DOUBLE_EQ(c.box_x, 75e-6);
+        EXPECT_DOUBLE_EQ(c.box_y, 75e-6);
+        ASSERT_EQ(c.shrinkage_rates.size(), 2u);
+        EXPECT_NEAR(c.shrinkage_rates[0], k.s1, 1e-15);
+        EXPECT_NEAR(c.shrinkage_rates[1], k.s2, 1e-15);
+    }
+    const Config quick = load_config_file((dir / "quick.toml").string());
+    const Config printed = load_config_file((dir / "quick_hamaker_printed.toml").string());
+    EXPECT_NE(printed.name, quick.name);
+    EXPECT_DOUBLE_EQ(printed.hamaker_ncm_cb, 9.5e-19);
+    Config same = printed;
+    same.name = quick.name;
+    same.hamaker_ncm_cb = quick.hamaker_ncm_cb;
+    EXPECT_EQ(to_toml(same), to_toml(quick)); // otherwise identical to the quick case
+}
+
+TEST(Config, UnknownKeyNamesKeyAndSuggestsNearest) {
+    const std::string msg = input_error("[contact]\nfrictoin = 0.5\n");
+    EXPECT_NE(msg.find("contact.frictoin"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("did you mean 'contact.friction'"), std::string::npos) << msg;
+    // Also through an override.
+    const std::string via_set = input_error("", {"contact.frictoin=0.5"});
+    EXPECT_NE(via_set.find("contact.friction'"), std::string::npos) << via_set;
+}
+
+TEST(Config, WrongUnitNamesKeyAndValue) {
+    const std::string msg = input_error("[film]\nbox_x = \"3 kg\"\n");
+    EXPECT_NE(msg.find("film.box_x"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("3 kg"), std::string::npos) << msg;
+}
+
+TEST(Config, OutOfRangeIsRejected) {
+    const std::string msg = input_error("[contact]\nrestitution = 1.5\n");
+    EXPECT_NE(msg.find("contact.restitution"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("1.5"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("out of range"), std::string::npos) << msg;
+    // The box must hold no two images of a partner (M-2.5): >= 36 um.
+    EXPECT_THROW(load_config("", "t", {"film.box_x=30um"}), InputError);
+}
+
+TEST(Config, SetOverridesApply) {
+    const Config c = load_config(default_config_toml(), "default",
+                                 {"run.seed=7", "film.areal_loading=\"5 mg/cm^2\"", "film.box_x=50um"});
+    EXPECT_EQ(c.seed, 7u);
+    EXPECT_NEAR(c.areal_loading, 0.05, 1e-15); // 5 mg/cm2 = 0.05 kg/m2
+    EXPECT_NEAR(c.box_x, 50e-6, 1e-18);
+    EXPECT_DOUBLE_EQ(c.box_y, 75e-6); // untouched
+    EXPECT_NE(input_error("", {"run.seed"}).find("KEY=VALUE"), std::string::npos);
+}
+
+TEST(Config, MassFractionsMustSumToOne) {
+    const std::string msg = input_error("[formulation]\nncm_mass_fraction = 0.90\n");
+    EXPECT_NE(msg.find("mass_fraction"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("sum to 1"), std::string::npos) << msg;
+    EXPECT_NO_THROW(load_config("[formulation]\nncm_mass_fraction = 0.90\npvdf_mass_fraction = 0.05\n"
+                                "cb_mass_fraction = 0.05\n", "t"));
+}
+
+// The resolved config written into each output folder reads back to the same configuration.
+TEST(Config, ToTomlRoundTrip) {
+    Config c = load_config(default_config_toml(), "default",
+                           {"run.seed=99", "film.box_x=\"41.3 um\"", "materials.contact_angle=\"33 deg\"",
+                            "lubrication.uses_reduced_viscosity=true", "numerics.stability_guard=\"warn\"",
+                            "dryer.shrinkage_rates=[\"0.7 um/s\", \"1.1 um/s\", \"0.4 um/s\"]"});
+    const std::string text = to_toml(c);
+    const Config back = load_config(text, "resolved.toml");
+    EXPECT_EQ(to_toml(back), text);
+    EXPECT_EQ(back.seed, 99u);
+    EXPECT_EQ(back.shrinkage_rates.size(), 3u);
+    EXPECT_TRUE(back.lubrication_uses_reduced_viscosity);
+    EXPECT_EQ(to_toml(load_config(to_toml(Config{}), "defaults")), to_toml(Config{}));
+}
+
+} // namespace
