@@ -15,7 +15,11 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
-    for (std::size_t i = 0; i < p_.size(); ++i) box_.wrap(p_.position[i]);
+    stats_.layer_top = p_.size() ? -INFINITY : 0.0;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        box_.wrap(p_.position[i]);
+        stats_.layer_top = std::max(stats_.layer_top, p_.position[i].z + p_.radius[i]);
+    }
     compute_forces();
 }
 
@@ -82,15 +86,14 @@ void Simulation::compute_forces() {
             for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
                 const std::uint32_t j = nl_.partner(s);
                 const Vec3 d = box_.minimum_image(xi, p.position[j]);
-                const double rj = p.radius[j];
                 const double dist2 = norm2(d);
-                const PairParams& pp = row[p.species[j]];
-                const double reach = ri + rj + interaction_range(pp, ri, rj);
                 Vec3& hist = nl_.history(s);
-                if (dist2 >= reach * reach && dist2 >= (ri + rj) * (ri + rj)) {
+                if (dist2 >= nl_.reach2(s)) {
                     hist = Vec3{};
                     continue;
                 }
+                const double rj = p.radius[j];
+                const PairParams& pp = row[p.species[j]];
                 const double dist = std::sqrt(dist2);
                 const PairGeometry g =
                     make_pair_geometry(d, dist, ri, rj, p.mass[i], p.mass[j], p.velocity[i],

@@ -41,10 +41,12 @@ struct SubstrateLubricationParams {
     double kappa_c = 0.1;   ///< κ_c = h_c / r
 };
 
-/// Squeeze resistance X_w(κ) in units of 6πη r (sphere-plane).
+/// Squeeze resistance X_w(κ) in units of 6πη r (sphere-plane), given ln κ.
+inline double substrate_lubrication_x(double kappa, double log_kappa) {
+    return 1.0 / kappa - 0.2 * log_kappa - (1.0 / 21.0) * kappa * log_kappa;
+}
 inline double substrate_lubrication_x(double kappa) {
-    const double lk = std::log(kappa);
-    return 1.0 / kappa - 0.2 * lk - (1.0 / 21.0) * kappa * lk;
+    return substrate_lubrication_x(kappa, std::log(kappa));
 }
 
 inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const Vec3& omega,
@@ -53,7 +55,7 @@ inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const 
     const double kappa = (z - r) / r;
     if (kappa > 1.0) return {};
     const double k_e = std::max(kappa, p.kappa_c);
-    const double l = -std::log(k_e);
+    const double log_k = std::log(k_e), l = -log_k;
     const double a_w = (8.0 / 15.0) * l + (64.0 / 375.0) * k_e * l;
     const double b_w = (2.0 / 15.0) * l + (86.0 / 375.0) * k_e * l;
     const double d_w = 0.4 * l + (66.0 / 125.0) * k_e * l;
@@ -62,7 +64,7 @@ inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const 
     const Vec3 z_hat{0.0, 0.0, 1.0};
     const Vec3 v_t{v.x, v.y, 0.0};
     const Vec3 w_t{omega.x, omega.y, 0.0};
-    const double x_w = substrate_lubrication_x(k_e) * vinogradova_factor(k_e, p.kappa_c);
+    const double x_w = substrate_lubrication_x(k_e, log_k) * vinogradova_factor(k_e, p.kappa_c);
     BodyForce out;
     out.force =
         (-c_f * x_w * v.z) * z_hat - (c_f * a_w) * v_t + (c_f * r * b_w) * cross(omega, z_hat);

@@ -29,6 +29,8 @@ public:
     [[nodiscard]] std::uint32_t begin(std::size_t i) const { return offset_[i]; }
     [[nodiscard]] std::uint32_t end(std::size_t i) const { return offset_[i + 1]; }
     [[nodiscard]] std::uint32_t partner(std::uint32_t slot) const { return partner_[slot]; }
+    /// Squared interaction reach (r_i + r_j + range)² of the pair in this slot, without skin.
+    [[nodiscard]] double reach2(std::uint32_t slot) const { return reach2_[slot]; }
     /// Tangential spring of the contact in this slot (zero when not in contact).
     [[nodiscard]] Vec3& history(std::uint32_t slot) { return history_[slot]; }
     [[nodiscard]] const Vec3& history(std::uint32_t slot) const { return history_[slot]; }
@@ -78,6 +80,7 @@ private:
     std::uint64_t builds_ = 0;
     Grid grid_;
     std::vector<std::uint32_t> offset_, partner_;
+    std::vector<double> reach2_;
     std::vector<Vec3> history_;
     std::vector<Vec3> x_build_;
     // Previous list, keyed by ids, for carrying histories over.
@@ -121,9 +124,9 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
         const Vec3 xi = p.position[i];
         const double ri = p.radius[i];
         const std::uint32_t idi = p.id[i];
-        const double reach = 2.0 * ri + owner_range(i) + skin_;
-        const int wx = int(std::ceil(reach / g.cx)), wy = int(std::ceil(reach / g.cy)),
-                  wz = int(std::ceil(reach / g.cz));
+        const double search = 2.0 * ri + owner_range(i) + skin_;
+        const int wx = int(std::ceil(search / g.cx)), wy = int(std::ceil(search / g.cy)),
+                  wz = int(std::ceil(search / g.cz));
         const std::uint32_t c = g.cell_of[i];
         const int ix = int(c % g.nx), iy = int((c / g.nx) % g.ny), iz = int(c / (g.nx * g.ny));
         // A stencil wider than the periodic grid visits every column once.
@@ -140,8 +143,8 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
                         const std::uint32_t j = g.cell_items[k];
                         if (!owns(ri, idi, p.radius[j], p.id[j])) continue;
                         const Vec3 d = box.minimum_image(xi, p.position[j]);
-                        const double cut = ri + p.radius[j] + range(i, j) + skin_;
-                        if (norm2(d) < cut * cut) on_pair(j);
+                        const double reach = ri + p.radius[j] + range(i, j);
+                        if (norm2(d) < (reach + skin_) * (reach + skin_)) on_pair(j, reach * reach);
                     }
                 }
             }
@@ -150,16 +153,20 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::size_t i = 0; i < n; ++i) {
         std::uint32_t count = 0;
-        visit(i, [&](std::uint32_t) { ++count; });
+        visit(i, [&](std::uint32_t, double) { ++count; });
         offset_[i + 1] = count;
     }
     for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
     partner_.resize(offset_[n]);
+    reach2_.resize(offset_[n]);
     history_.assign(offset_[n], Vec3{});
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::size_t i = 0; i < n; ++i) {
         std::uint32_t s = offset_[i];
-        visit(i, [&](std::uint32_t j) { partner_[s++] = j; });
+        visit(i, [&](std::uint32_t j, double reach2) {
+            reach2_[s] = reach2;
+            partner_[s++] = j;
+        });
     }
     carry_history(p);
     x_build_ = p.position;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // End to end on a small box (model.md M-8; issue: film follows the level during the constant-rate
-// period, consolidates, ends with a plausible porosity, loses no particle). A thin film (2 mg/cm²,
-// the two smaller NCM classes) in a 36 x 36 um box keeps it to ~1e8 particle-steps at the paper's
-// time step; the end criterion gap is lowered to 2.5 um because the whole film is only ~1.3 NCM
-// diameters thick (the default, the largest diameter, needs a film of several diameters).
+// period, consolidates, ends with a plausible porosity, loses no particle). To stay near 1e8
+// particle-steps at the paper's time step, the film is thin (2.5 mg/cm², 16 um wet) in a 36 x 36 um
+// box and the NCM is one class of 3 um spheres, so that the film is still ~4 NCM diameters thick
+// and the end criterion (top - level > largest diameter) keeps its meaning. Physics, scaling and
+// time step are the paper's.
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -36,9 +37,8 @@ std::vector<std::vector<double>> read_csv(const std::filesystem::path& file, std
 TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     const Config c = load_config(default_config_toml(), "default",
                                  {"run.name=e2e", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
-                                  "film.areal_loading=2mg/cm^2",
-                                  "formulation.ncm_diameters=[\"6.50 um\", \"7.58 um\"]",
-                                  "drying.final_gap=2.5um", "drying.relaxation=1s",
+                                  "film.areal_loading=2.5mg/cm^2",
+                                  "formulation.ncm_diameters=[\"3 um\"]", "drying.relaxation=1s",
                                   "output.snapshot_every=0", "output.timeseries_every=0.25s"});
     const FilmRecipe recipe = make_recipe(c);
     const auto dir = std::filesystem::temp_directory_path() / "drydem_e2e_test";
@@ -64,7 +64,7 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     const auto rows = read_csv(dir / "timeseries.csv", h);
     auto col = [&](const std::string& name) { return std::size_t(std::find(h.begin(), h.end(), name) - h.begin()); };
     const std::size_t t_col = col("process_time_s"), level_col = col("liquid_level_um"),
-                      p99_col = col("film_top_p99_um"), ke_col = col("kinetic_energy_J");
+                      p99_col = col("film_top_p99_um");
     ASSERT_LT(p99_col, h.size());
     int checked = 0;
     const double h_wet = recipe.wet_film_height * 1e6;
@@ -79,9 +79,11 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     EXPECT_LT(r.final_thickness, 0.85 * recipe.wet_film_height);
     EXPECT_GT(r.porosity, 0.35);
     EXPECT_LT(r.porosity, 0.60);
-    double ke_max = 0;
-    for (const auto& row : rows) ke_max = std::max(ke_max, row[ke_col]);
-    EXPECT_LT(rows.back()[ke_col], 0.05 * ke_max);
+    // Self-supporting structure: while the level keeps sinking through it during the relaxation
+    // window, the film no longer follows (only the slight rebound the paper notes).
+    EXPECT_NEAR(r.relaxed_thickness, r.final_thickness, 0.05 * r.final_thickness);
+    const double level_end = rows.back()[level_col];
+    EXPECT_LT(level_end, r.final_thickness * 1e6 - 3.0);
 
     std::ifstream js(dir / "summary.json");
     const nlohmann::json summary = nlohmann::json::parse(js);
