@@ -45,37 +45,31 @@ void Simulation::rebuild_neighbors() {
 
 void Simulation::compute_forces() {
     if (force_rebuild_) rebuild_neighbors();
+    std::size_t wall_contacts = 0;
+    double wall_overlap = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(+ : wall_contacts) reduction(max : wall_overlap)
+    for (std::size_t i = 0; i < p_.size(); ++i) body_forces(i, wall_contacts, wall_overlap);
+    pair_forces(wall_contacts, wall_overlap);
+}
+
+void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
+    if (force_rebuild_) rebuild_neighbors();
     const std::size_t n = p_.size();
     const double dt = settings_.dt;
-    const double level = liquid_level_;
-    std::size_t contacts = 0, wall_contacts = 0;
-    double max_overlap = 0.0;
+    std::size_t contacts = 0;
+    double max_overlap = wall_overlap;
     ParticleStore& p = p_;
     const int species_count = ff_.species_count;
     const PairParams* pair_table = ff_.pair.data();
 
-#pragma omp parallel num_threads(threads_) reduction(+ : contacts, wall_contacts) reduction(max : max_overlap)
+    // Pair loop over the half list. Thread 0 accumulates into the store (which holds the particle
+    // forces already), the others into their own buffers, which the reduction adds in a fixed
+    // order and leaves zeroed for the next step.
+#pragma omp parallel num_threads(threads_) reduction(+ : contacts) reduction(max : max_overlap)
     {
         const int t = omp_get_thread_num();
         Vec3* force = t == 0 ? p.force.data() : thread_force_[t - 1].data();
         Vec3* torque = t == 0 ? p.torque.data() : thread_torque_[t - 1].data();
-        if (t > 0) {
-            std::fill(force, force + n, Vec3{});
-            std::fill(torque, torque + n, Vec3{});
-        }
-        // Particle forces first (each particle written by one thread), then the pair loop.
-#pragma omp for schedule(static)
-        for (std::size_t i = 0; i < n; ++i) {
-            const BodyForce b =
-                particle_forces(ff_, p.species[i], p.radius[i], p.density[i], p.mass[i],
-                                p.position[i], p.velocity[i], p.omega[i], level, p.wall_history[i], dt);
-            p.force[i] = b.force;
-            p.torque[i] = b.torque;
-            if (p.position[i].z < p.radius[i] && ff_.substrate_on) {
-                ++wall_contacts;
-                max_overlap = std::max(max_overlap, 1.0 - p.position[i].z / p.radius[i]);
-            }
-        }
 #pragma omp for schedule(static)
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 xi = p.position[i];
@@ -89,7 +83,7 @@ void Simulation::compute_forces() {
                 const double dist2 = norm2(d);
                 Vec3& hist = nl_.history(s);
                 if (dist2 >= nl_.reach2(s)) {
-                    hist = Vec3{};
+                    if (hist.x != 0.0 || hist.y != 0.0 || hist.z != 0.0) hist = Vec3{};
                     continue;
                 }
                 const double rj = p.radius[j];
@@ -118,6 +112,8 @@ void Simulation::compute_forces() {
                 for (int k = 0; k < threads_ - 1; ++k) {
                     p.force[i] += thread_force_[k][i];
                     p.torque[i] += thread_torque_[k][i];
+                    thread_force_[k][i] = Vec3{};
+                    thread_torque_[k][i] = Vec3{};
                 }
         }
     }
@@ -126,30 +122,48 @@ void Simulation::compute_forces() {
     stats_.max_overlap_rel = max_overlap;
 }
 
+void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap) {
+    ParticleStore& p = p_;
+    const BodyForce b = particle_forces(ff_, p.species[i], p.radius[i], p.density[i], p.mass[i],
+                                        p.position[i], p.velocity[i], p.omega[i], liquid_level_,
+                                        p.wall_history[i], settings_.dt);
+    p.force[i] = b.force;
+    p.torque[i] = b.torque;
+    if (ff_.substrate_on && p.position[i].z < p.radius[i]) {
+        ++wall_contacts;
+        wall_overlap = std::max(wall_overlap, 1.0 - p.position[i].z / p.radius[i]);
+    }
+}
+
 void Simulation::step() {
     const std::size_t n = p_.size();
     const double dt = settings_.dt, half = 0.5 * dt;
     ParticleStore& p = p_;
     const auto& x_build = nl_.positions_at_build();
-    double max_disp2 = 0.0;
+    double max_disp2 = 0.0, wall_overlap = 0.0;
+    std::size_t wall_contacts = 0;
+    // Step 3 (level part): the liquid level at the new time, needed by the particle forces.
+    if (level_at_) liquid_level_ = level_at_(time_ + dt);
     // M-9.1 steps 1-2: half kick, drift, wrap; track the largest displacement since the build.
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_disp2)
+    // The particle forces (substrate, drag, weight, capillary) need only this particle's new
+    // state, so they are computed in the same pass (step 4, first half).
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_disp2, wall_overlap) reduction(+ : wall_contacts)
     for (std::size_t i = 0; i < n; ++i) {
         p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
         p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
         p.position[i] += dt * p.velocity[i];
         box_.wrap(p.position[i]);
         max_disp2 = std::max(max_disp2, norm2(box_.minimum_image(x_build[i], p.position[i])));
+        body_forces(i, wall_contacts, wall_overlap);
     }
     time_ += dt;
     ++step_;
-    // Step 3: liquid level at the new time, neighbor list check.
-    if (level_at_) liquid_level_ = level_at_(time_);
+    // Step 3: neighbor list check (a rebuild may re-sort the particles, forces included).
     if (!std::isfinite(max_disp2)) non_finite_ = true;
     if (non_finite_) check_health();
     if (nl_.needs_rebuild(max_disp2)) force_rebuild_ = true;
-    // Step 4: forces at the new positions with the half-step velocities.
-    compute_forces();
+    // Step 4: pair forces at the new positions with the half-step velocities.
+    pair_forces(wall_contacts, wall_overlap);
     // Step 5: second half kick; layer top for the end criterion (M-8.2).
     double top = -INFINITY;
     bool finite = true;

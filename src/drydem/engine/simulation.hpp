@@ -81,6 +81,10 @@ public:
 
 private:
     void rebuild_neighbors();
+    /// Particle forces of particle i into the store (M-9.5), counting substrate contacts.
+    void body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap);
+    /// Pair forces added to the store; completes the step statistics.
+    void pair_forces(std::size_t wall_contacts, double wall_overlap);
     void check_health();
 
     ParticleStore p_;

@@ -19,6 +19,10 @@ struct HertzMindlinParams {
     double beta = 0.0;          ///< damping ratio from restitution, ≥ 0 (M-2.1)
     double friction = 0.8;      ///< sliding friction μ_s
     double rolling_friction = 0.0; ///< μ_r (C-7: off by default)
+    /// Derived: 2 sqrt(5/6) β sqrt(2 E*) and 2 sqrt(5/6) β sqrt(8 G*), so that
+    /// γ_n = damping_n (R* δ)^{1/4} sqrt(m*) and γ_t = damping_t (R* δ)^{1/4} sqrt(m*) (M-2.1)
+    /// cost one square root per contact. Set by mix_hertz_mindlin.
+    double damping_n = 0.0, damping_t = 0.0;
 };
 
 /// β = -ln e / sqrt(ln² e + π²) (M-2.1).
@@ -37,6 +41,9 @@ inline HertzMindlinParams mix_hertz_mindlin(double e_i, double nu_i, double e_j,
     p.beta = damping_ratio(restitution);
     p.friction = friction;
     p.rolling_friction = rolling_friction;
+    constexpr double two_sqrt_5_6 = 1.8257418583505538; // 2 sqrt(5/6)
+    p.damping_n = two_sqrt_5_6 * p.beta * std::sqrt(2.0 * p.e_star);
+    p.damping_t = two_sqrt_5_6 * p.beta * std::sqrt(8.0 * p.g_star);
     return p;
 }
 
@@ -66,9 +73,9 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
     const double sqrt_rd = std::sqrt(k.r_eff * k.overlap);
     const double s_n = 2.0 * p.e_star * sqrt_rd;
     const double s_t = 8.0 * p.g_star * sqrt_rd;
-    constexpr double two_sqrt_5_6 = 1.8257418583505538; // 2 sqrt(5/6)
-    const double gamma_n = two_sqrt_5_6 * p.beta * std::sqrt(s_n * k.m_eff);
-    const double gamma_t = two_sqrt_5_6 * p.beta * std::sqrt(s_t * k.m_eff);
+    const double root = std::sqrt(sqrt_rd * k.m_eff); // (R* δ)^{1/4} sqrt(m*)
+    const double gamma_n = p.damping_n * root;          // 2 sqrt(5/6) β sqrt(S_n m*)
+    const double gamma_t = p.damping_t * root;          // 2 sqrt(5/6) β sqrt(S_t m*)
 
     const double v_n = dot(k.v_rel, n);
     // M-2.2: elastic (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ, plus viscous damping; not clipped.
