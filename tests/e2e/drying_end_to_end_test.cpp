@@ -9,6 +9,7 @@
 #include "drydem/io/particle_io.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <gtest/gtest.h>
+#include "test_dirs.hpp"
 #include <nlohmann/json.hpp>
 #include <filesystem>
 #include <fstream>
@@ -41,8 +42,7 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
                                   "formulation.ncm_diameters=[\"3 um\"]", "drying.relaxation=1s",
                                   "output.snapshot_every=0", "output.timeseries_every=0.25s"});
     const FilmRecipe recipe = make_recipe(c);
-    const auto dir = std::filesystem::temp_directory_path() / "drydem_e2e_test";
-    std::filesystem::remove_all(dir);
+    const auto dir = testing_support::temp_dir();
     RunOptions o;
     o.output_dir = dir;
     o.quiet = true;
@@ -89,4 +89,31 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     const nlohmann::json summary = nlohmann::json::parse(js);
     EXPECT_EQ(summary["status"], "completed");
     EXPECT_NEAR(summary["porosity"].get<double>(), r.porosity, 1e-12);
+}
+
+// A run that blows up (time step far above the damping bound, guard set to warn only) stops with
+// a diagnosis naming the particle and the cause, and keeps what it wrote: summary.json with
+// "failed", the time series so far and the particles at the failure.
+TEST(DryingEndToEnd, BlowUpStopsWithDiagnosisAndKeepsOutputs) {
+    const Config c = load_config(default_config_toml(), "default",
+                                 {"run.name=blowup", "run.threads=1", "run.time_step=5e-10s",
+                                  "numerics.stability_guard=\"warn\"", "film.box_x=36um",
+                                  "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
+                                  "formulation.ncm_diameters=[\"3 um\"]", "output.snapshot_every=0"});
+    const auto dir = testing_support::temp_dir();
+    RunOptions o;
+    o.output_dir = dir;
+    o.quiet = true;
+    o.plots = false;
+    const DryingResult r = run_drying(c, o);
+    ASSERT_FALSE(r.completed);
+    EXPECT_NE(r.error.find("particle"), std::string::npos) << r.error;
+    EXPECT_TRUE(r.error.find("non-finite") != std::string::npos ||
+                r.error.find("runaway overlap") != std::string::npos) << r.error;
+    std::ifstream js(dir / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(js);
+    EXPECT_EQ(summary["status"], "failed");
+    EXPECT_EQ(summary["error"], r.error);
+    EXPECT_TRUE(std::filesystem::exists(dir / "timeseries.csv"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "final.csv"));
 }

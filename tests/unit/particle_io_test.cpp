@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include "test_dirs.hpp"
 #include <map>
 #include <random>
 #include <string>
@@ -20,15 +21,7 @@ namespace {
 
 const fs::path kPeers = fs::path(DRYDEM_SOURCE_DIR "/../shared/peers/data");
 
-/// Fresh folder per test under the GoogleTest temp dir.
-fs::path temp_dir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    auto dir = fs::path(::testing::TempDir()) /
-               (std::string("drydem_") + info->test_suite_name() + "_" + info->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+using drydem::testing_support::temp_dir;
 
 fs::path write_text(const fs::path& file, const std::string& text) {
     std::ofstream(file, std::ios::binary) << text;

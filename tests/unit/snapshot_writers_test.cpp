@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include "test_dirs.hpp"
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,14 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temp_dir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    auto dir = fs::path(::testing::TempDir()) /
-               (std::string("drydem_") + info->test_suite_name() + "_" + info->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+using drydem::testing_support::temp_dir;
 
 std::string read_all(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
