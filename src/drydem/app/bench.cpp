@@ -40,17 +40,21 @@ int run_bench(const BenchOptions& o) {
     const std::size_t n = sim.particles().size();
     sim.run(o.warmup);
     const auto builds0 = sim.neighbors().builds();
+    const PhaseTimes before = sim.phase_times();
     const auto t0 = std::chrono::steady_clock::now();
     sim.run(o.steps);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double rate = double(n) * double(o.steps) / wall;
+    const PhaseTimes& after = sim.phase_times();
     // Contacts per particle as the peers count them: each contact at both particles, no wall.
     fmt::print("{{\"code\": \"drydem\", \"threads\": {}, \"particles\": {}, \"steps\": {}, "
                "\"seconds\": {:.4f}, \"ms_per_step\": {:.4f}, \"particle_steps_per_s\": {:.5g}, "
-               "\"contacts_per_particle\": {:.4f}, \"neighbor_builds\": {}, \"pairs_in_list\": {}}}\n",
+               "\"contacts_per_particle\": {:.4f}, \"neighbor_builds\": {}, \"pairs_in_list\": {}, "
+               "\"seconds_pair\": {:.4f}, \"seconds_neighbor\": {:.4f}, \"seconds_integrate\": {:.4f}}}\n",
                sim.threads(), n, o.steps, wall, 1e3 * wall / double(o.steps), rate,
                2.0 * double(sim.stats().contacts) / double(n), sim.neighbors().builds() - builds0,
-               sim.neighbors().pairs());
+               sim.neighbors().pairs(), after.pair - before.pair, after.neighbor - before.neighbor,
+               after.integrate - before.integrate);
     return 0;
 }
 

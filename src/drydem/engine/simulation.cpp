@@ -9,6 +9,7 @@
 
 namespace drydem {
 
+
 Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(particles)), box_(box), ff_(std::move(forces)), settings_(settings),
       nl_(settings.skin) {
@@ -39,8 +40,10 @@ void Simulation::rebuild_neighbors() {
         return interaction_range(ff_.pair_params(p_.species[i], p_.species[j]), p_.radius[i],
                                  p_.radius[j]);
     };
+    const double t0 = omp_get_wtime();
     nl_.build(p_, box_, range, owner_range, sort);
     force_rebuild_ = false;
+    times_.neighbor += omp_get_wtime() - t0;
 }
 
 void Simulation::compute_forces() {
@@ -54,17 +57,20 @@ void Simulation::compute_forces() {
 
 void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     if (force_rebuild_) rebuild_neighbors();
+    const double t0 = omp_get_wtime();
     const std::size_t n = p_.size();
     const double dt = settings_.dt;
     std::size_t contacts = 0;
     double max_overlap = wall_overlap;
     ParticleStore& p = p_;
-    const int species_count = ff_.species_count;
+    const std::size_t species_count = std::size_t(ff_.species_count);
     const PairParams* pair_table = ff_.pair.data();
 
     // Pair loop over the half list. Thread 0 accumulates into the store (which holds the particle
     // forces already), the others into their own buffers, which the reduction adds in a fixed
-    // order and leaves zeroed for the next step.
+    // order and leaves zeroed for the next step. (A variant that evaluated batches of 64 pairs in
+    // one `omp simd` loop was measured 20 % slower: the gathers and masked branches cost more
+    // than the overlapped divisions save.)
 #pragma omp parallel num_threads(threads_) reduction(+ : contacts) reduction(max : max_overlap)
     {
         const int t = omp_get_thread_num();
@@ -74,8 +80,7 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 xi = p.position[i];
             const double ri = p.radius[i];
-            const int si = p.species[i];
-            const PairParams* row = pair_table + std::size_t(si) * species_count;
+            const PairParams* row = pair_table + std::size_t(p.species[i]) * species_count;
             Vec3 fi{}, ti{};
             for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
                 const std::uint32_t j = nl_.partner(s);
@@ -87,16 +92,14 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
                     continue;
                 }
                 const double rj = p.radius[j];
-                const PairParams& pp = row[p.species[j]];
-                const double dist = std::sqrt(dist2);
                 const PairGeometry g =
-                    make_pair_geometry(d, dist, ri, rj, p.mass[i], p.mass[j], p.velocity[i],
-                                       p.velocity[j], p.omega[i], p.omega[j]);
+                    make_pair_geometry(d, std::sqrt(dist2), ri, rj, p.mass[i], p.mass[j],
+                                       p.velocity[i], p.velocity[j], p.omega[i], p.omega[j]);
                 if (g.gap < 0.0) {
                     ++contacts;
                     max_overlap = std::max(max_overlap, -g.gap / std::min(ri, rj));
                 }
-                const PairForce f = pair_interaction(g, pp, hist, dt);
+                const PairForce f = pair_interaction(g, row[p.species[j]], hist, dt);
                 fi += f.force_i;
                 ti += f.torque_i;
                 force[j] -= f.force_i;
@@ -120,6 +123,7 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     stats_.contacts = contacts;
     stats_.wall_contacts = wall_contacts;
     stats_.max_overlap_rel = max_overlap;
+    times_.pair += omp_get_wtime() - t0;
 }
 
 void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap) {
@@ -140,6 +144,7 @@ void Simulation::step() {
     const double dt = settings_.dt, half = 0.5 * dt;
     ParticleStore& p = p_;
     const auto& x_build = nl_.positions_at_build();
+    double t_start = omp_get_wtime();
     double max_disp2 = 0.0, wall_overlap = 0.0;
     std::size_t wall_contacts = 0;
     // Step 3 (level part): the liquid level at the new time, needed by the particle forces.
@@ -162,8 +167,10 @@ void Simulation::step() {
     if (!std::isfinite(max_disp2)) non_finite_ = true;
     if (non_finite_) check_health();
     if (nl_.needs_rebuild(max_disp2)) force_rebuild_ = true;
+    times_.integrate += omp_get_wtime() - t_start;
     // Step 4: pair forces at the new positions with the half-step velocities.
     pair_forces(wall_contacts, wall_overlap);
+    t_start = omp_get_wtime();
     // Step 5: second half kick; layer top for the end criterion (M-8.2).
     double top = -INFINITY;
     bool finite = true;
@@ -176,6 +183,7 @@ void Simulation::step() {
     }
     stats_.layer_top = top;
     non_finite_ = !finite;
+    times_.integrate += omp_get_wtime() - t_start;
     if (non_finite_ || stats_.max_overlap_rel > settings_.overlap_limit) check_health();
 }
 

@@ -20,6 +20,13 @@ struct EngineSettings {
     double overlap_limit = 1.0;  ///< stop when an overlap exceeds this fraction of the smaller radius
 };
 
+/// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).
+struct PhaseTimes {
+    double integrate = 0.0; ///< kick, drift, particle forces, second kick
+    double neighbor = 0.0;  ///< neighbor-list rebuilds (incl. re-sorting)
+    double pair = 0.0;      ///< pair forces
+};
+
 /// Per-step diagnostics of the last force evaluation and kick.
 struct StepStats {
     std::size_t contacts = 0;        ///< particle-particle contacts (δ > 0)
@@ -61,6 +68,7 @@ public:
     /// Changes Δt between steps (the stability guard lowers it in dense packings, M-9.2).
     void set_time_step(double dt) { settings_.dt = dt; }
     [[nodiscard]] const StepStats& stats() const { return stats_; }
+    [[nodiscard]] const PhaseTimes& phase_times() const { return times_; }
     [[nodiscard]] int threads() const { return threads_; }
 
     /// Translational + rotational kinetic energy [J].
@@ -100,6 +108,7 @@ private:
     bool force_rebuild_ = true;
     bool non_finite_ = false;
     StepStats stats_;
+    PhaseTimes times_;
     std::uint64_t rebuilds_since_sort_ = 0;
     // Per-thread force/torque buffers (thread 0 writes into the store): a fixed reduction order
     // makes results identical run to run for a given thread count.
