@@ -43,3 +43,28 @@ ax[1].legend()
 fig.tight_layout()
 fig.savefig(os.path.join(run, 'plots', 'diagnostics.png'), dpi=120)
 print('plots written to', os.path.join(run, 'plots'))
+
+# Cross-section of the final structure: spheres cut by the plane y = ly/2 (true sizes), with the
+# final thickness and the liquid level at the end.
+parts = list(csv.DictReader(open(os.path.join(run, 'final.csv'))))
+ly = summary['box_um'][1]
+y0 = 0.5 * ly
+fig, ax = plt.subplots(figsize=(6.4, 4.0))
+for p in parts:
+    r = float(p['radius_m']) * 1e6
+    dy = float(p['y_m']) * 1e6 - y0
+    if abs(dy) < r:
+        rc = (r * r - dy * dy) ** 0.5  # radius of the cut circle
+        color = '#444444' if p['type'] == '6' else '#c0392b'
+        ax.add_patch(plt.Circle((float(p['x_m']) * 1e6, float(p['z_m']) * 1e6), rc, color=color, lw=0))
+if summary.get('final_thickness_um') is not None:
+    ax.axhline(summary['final_thickness_um'], color='k', ls='--', lw=0.8, label='final thickness')
+ax.set_xlim(0, summary['box_um'][0])
+ax.set_ylim(0, max(summary['wet_film_height_um'] * 0.75, (summary.get('final_thickness_um') or 0) * 1.1))
+ax.set_aspect('equal')
+ax.set_xlabel('x / um')
+ax.set_ylabel('z / um')
+ax.set_title(f'final structure, section y = {y0:.1f} um (red NCM, grey CB)')
+ax.legend(loc='upper right')
+fig.tight_layout()
+fig.savefig(os.path.join(run, 'plots', 'structure_section.png'), dpi=120)
