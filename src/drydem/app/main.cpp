@@ -84,7 +84,10 @@ int main(int argc, char** argv) {
             app::print_check(load(config_file, sets));
             return 0;
         }
-        // `drydem` alone and `drydem run` both run the main job.
+        if (!*run) {
+            std::cout << cli.help();
+            return 0;
+        }
         const Config c = load(config_file, sets);
         RunOptions o;
         o.output_dir = out_dir.empty() ? default_output_dir(c) : out_dir;
