@@ -44,3 +44,11 @@ TEST(LiquidLevel, ClampsAtSubstrate) {
 }
 
 } // namespace
+
+// The inverse of the schedule (used for the ETA): time at which the level reaches a height.
+TEST(LiquidLevel, TimeAtLevelInvertsTheSchedule) {
+    const drydem::LiquidLevelSchedule s{130.51e-6, {6.70, 11.93}, 6e-6};
+    for (double t : {0.0, 1e-6, 5.99e-6, 6e-6, 7.5e-6, 9e-6})
+        EXPECT_NEAR(s.time_at_level(s.level(t)), t, 1e-15) << t;
+    EXPECT_NEAR(s.time_at_level(90.31e-6), 6e-6, 1e-12);
+}

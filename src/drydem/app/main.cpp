@@ -6,6 +6,7 @@
 #include "drydem/drying/drying_run.hpp"
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
+#include "drydem/git_hash.hpp"
 #include <fmt/format.h>
 #include <chrono>
 #include <filesystem>

@@ -8,6 +8,7 @@
 #include "drydem/io/snapshot_writers.hpp"
 #include "drydem/setup/formulation.hpp"
 #include "drydem/setup/insertion.hpp"
+#include "drydem/git_hash.hpp"
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
@@ -200,7 +201,7 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     double next_row = 0.0, next_snapshot = 0.0;
     std::uint64_t builds_seen = sim.neighbors().builds();
     auto last_progress = Clock::now();
-    const double speed_last = scaled.level_speeds_scaled.back();
+    const double areal_mass = recipe.realised_dry_mass() / recipe.base_area;
     try {
         row();
         snapshot();
@@ -255,10 +256,14 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
             const auto now = Clock::now();
             if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_every) {
                 last_progress = now;
-                // ETA: remaining simulated time to the end criterion (level travel) or window end.
-                const double remaining = final_found ? t_end - t
-                                                     : std::max(0.0, (level - (top - final_gap))) / speed_last +
-                                                           scaled.sim_time(c.relaxation);
+                // ETA: until the level is d_max below the expected final top (the current top,
+                // or at most the thickness of an uncalendered film of ~2.4 g/cm3, M-8.3), plus
+                // the relaxation window.
+                const double expected_top = std::min(top, std::max(areal_mass / 2400.0, 0.5 * top));
+                const double remaining =
+                    final_found ? t_end - t
+                                : std::max(0.0, schedule.time_at_level(std::max(0.0, expected_top - final_gap)) - t) +
+                                      scaled.sim_time(c.relaxation);
                 const double elapsed = std::chrono::duration<double>(now - wall_start).count();
                 const double eta = elapsed / std::max(t, 1e-30) * remaining;
                 log->info("step {:>9}  t = {:8.3f} s ({:.4g} us sim)  level {:7.3f} um  top {:7.3f} um  "
@@ -279,7 +284,6 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     // --- results (also after a failure: keep what the run reached) ---
     result.steps = sim.step_count();
     result.wall_time = std::chrono::duration<double>(Clock::now() - wall_start).count();
-    const double areal_mass = recipe.realised_dry_mass() / recipe.base_area;
     if (final_found) {
         const CoatingDensity d = coating_density(areal_mass, result.final_thickness, recipe.solids_density);
         result.density = d.density;

@@ -30,6 +30,18 @@ struct LiquidLevelSchedule {
         }
         return std::max(0.0, z);
     }
+    /// Simulated time at which the level reaches height z [s] (the inverse of level()).
+    [[nodiscard]] double time_at_level(double z) const {
+        double level_now = initial_level, t0 = 0.0;
+        for (std::size_t k = 0; k < speeds.size(); ++k) {
+            const bool last = k + 1 == speeds.size();
+            const double drop = speeds[k] * zone_duration;
+            if (last || level_now - drop <= z) return t0 + std::max(0.0, level_now - z) / speeds[k];
+            level_now -= drop;
+            t0 += zone_duration;
+        }
+        return t0;
+    }
 };
 
 } // namespace drydem
