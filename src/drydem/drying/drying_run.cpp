@@ -58,6 +58,13 @@ std::size_t particles_cutting_level(const ParticleStore& p, double level) {
 ParticleStore particles_from_file(const std::filesystem::path& file, const FilmRecipe& recipe,
                                   const Box& box) {
     const ParticleFile in = read_particles(file);
+    auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); };
+    if ((in.lx && !same(*in.lx, box.lx)) || (in.ly && !same(*in.ly, box.ly)))
+        throw InputError(fmt::format(
+            "--particles {}: the file's periodic box is {:.6g} x {:.6g} um but the config's is "
+            "{:.6g} x {:.6g} um; set film.box_x and film.box_y to the file's box",
+            file.string(), in.lx.value_or(box.lx) * 1e6, in.ly.value_or(box.ly) * 1e6, box.lx * 1e6,
+            box.ly * 1e6));
     ParticleStore p;
     for (const ParticleRecord& r : in.particles) {
         if (r.type < 1 || r.type > int(recipe.species.size()))
@@ -94,6 +101,15 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     ParticleStore particles = opt.particles_file
                                   ? particles_from_file(*opt.particles_file, recipe, box)
                                   : insert_particles(recipe, box, recipe.wet_film_height, c.seed);
+    if (opt.particles_file) {
+        double top = 0.0;
+        for (std::size_t i = 0; i < particles.size(); ++i)
+            top = std::max(top, particles.position[i].z + particles.radius[i]);
+        if (top > recipe.wet_film_height)
+            log->warn("--particles: the highest particle top ({:.4g} um) is above the initial liquid "
+                      "level H_wet = {:.4g} um of this config (film.areal_loading); the end "
+                      "criterion may fire at once", top * 1e6, recipe.wet_film_height * 1e6);
+    }
     std::size_t n_ncm = 0, n_cb = 0;
     for (std::uint8_t s : particles.species) (recipe.species[s].is_cb ? n_cb : n_ncm)++;
     const double final_gap = c.final_gap > 0.0 ? c.final_gap : recipe.largest_diameter();
