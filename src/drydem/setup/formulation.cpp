@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/setup/formulation.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -45,6 +47,14 @@ FilmRecipe make_recipe(const Config& c) {
     cb.is_cb = true;
     r.species.push_back(cb);
     r.pvdf_mass = c.pvdf_mass_fraction * r.dry_mass;
+    // Every particle must fit below the initial level (C-2).
+    for (const SizeClass& s : r.species)
+        if (s.count > 0 && s.diameter > r.wet_film_height)
+            throw InputError(fmt::format(
+                "film too thin for its particles: wet film height {:.4g} um (film.areal_loading = "
+                "{:.4g} mg/cm2) < particle diameter {:.4g} um; raise film.areal_loading or drop the "
+                "largest class in formulation.ncm_diameters",
+                r.wet_film_height * 1e6, c.areal_loading * 100, s.diameter * 1e6));
     return r;
 }
 
