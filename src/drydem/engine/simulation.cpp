@@ -82,8 +82,17 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
             const double ri = p.radius[i];
             const PairParams* row = pair_table + std::size_t(p.species[i]) * species_count;
             Vec3 fi{}, ti{};
-            for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
+            const std::uint32_t row_end = nl_.end(i);
+            for (std::uint32_t s = nl_.begin(i); s < row_end; ++s) {
                 const std::uint32_t j = nl_.partner(s);
+                // The partners' data lie in L2/L3: ask for the next partner's lines early.
+                if (s + 1 < row_end) {
+                    const std::uint32_t jn = nl_.partner(s + 1);
+                    __builtin_prefetch(&p.velocity[jn]);
+                    __builtin_prefetch(&p.omega[jn]);
+                    __builtin_prefetch(&force[jn], 1);
+                    __builtin_prefetch(&torque[jn], 1);
+                }
                 const Vec3 d = box_.minimum_image(xi, p.position[j]);
                 const double dist2 = norm2(d);
                 Vec3& hist = nl_.history(s);
