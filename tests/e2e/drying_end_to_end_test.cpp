@@ -33,6 +33,13 @@ std::vector<std::vector<double>> read_csv(const std::filesystem::path& file, std
     }
     return rows;
 }
+DryingResult run_quietly(const Config& c, const std::filesystem::path& dir) {
+    RunOptions o;
+    o.output_dir = dir;
+    o.quiet = true;
+    o.plots = false;
+    return run_drying(c, o);
+}
 } // namespace
 
 TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
@@ -43,11 +50,7 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
                                   "output.snapshot_every=0", "output.timeseries_every=0.25s"});
     const FilmRecipe recipe = make_recipe(c);
     const auto dir = testing_support::temp_dir();
-    RunOptions o;
-    o.output_dir = dir;
-    o.quiet = true;
-    o.plots = false;
-    const DryingResult r = run_drying(c, o);
+    const DryingResult r = run_quietly(c, dir);
     ASSERT_TRUE(r.completed) << r.error;
 
     // No particle lost, below the substrate or above the wet film.
@@ -101,11 +104,7 @@ TEST(DryingEndToEnd, BlowUpStopsWithDiagnosisAndKeepsOutputs) {
                                   "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
                                   "formulation.ncm_diameters=[\"3 um\"]", "output.snapshot_every=0"});
     const auto dir = testing_support::temp_dir();
-    RunOptions o;
-    o.output_dir = dir;
-    o.quiet = true;
-    o.plots = false;
-    const DryingResult r = run_drying(c, o);
+    const DryingResult r = run_quietly(c, dir);
     ASSERT_FALSE(r.completed);
     EXPECT_NE(r.error.find("particle"), std::string::npos) << r.error;
     EXPECT_TRUE(r.error.find("non-finite") != std::string::npos ||

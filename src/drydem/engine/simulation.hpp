@@ -61,10 +61,8 @@ public:
     [[nodiscard]] const ForceField& forces() const { return ff_; }
     [[nodiscard]] const EngineSettings& settings() const { return settings_; }
     [[nodiscard]] const NeighborList& neighbors() const { return nl_; }
-    [[nodiscard]] NeighborList& neighbors_mut() { return nl_; }
     [[nodiscard]] double time() const { return time_; }
     [[nodiscard]] std::int64_t step_count() const { return step_; }
-    void set_clock(std::int64_t step, double time) { step_ = step; time_ = time; }
     /// Changes Δt between steps (the stability guard lowers it in dense packings, M-9.2).
     void set_time_step(double dt) { settings_.dt = dt; }
     [[nodiscard]] const StepStats& stats() const { return stats_; }

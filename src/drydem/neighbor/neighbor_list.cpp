@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/neighbor/neighbor_list.hpp"
 #include "drydem/core/error.hpp"
-#include <fmt/format.h>
 
 namespace drydem {
 
@@ -78,28 +77,6 @@ std::vector<NeighborList::Entry> NeighborList::history_entries(const ParticleSto
         for (std::uint32_t s = offset_[i]; s < offset_[i + 1]; ++s)
             if (norm2(history_[s]) > 0.0) out.push_back({p.id[i], p.id[partner_[s]], history_[s]});
     return out;
-}
-
-void NeighborList::restore_history(const ParticleStore& p, const std::vector<Entry>& entries) {
-    std::vector<std::uint32_t> row_of_id;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        if (p.id[i] >= row_of_id.size()) row_of_id.resize(p.id[i] + 1, UINT32_MAX);
-        row_of_id[p.id[i]] = std::uint32_t(i);
-    }
-    for (const Entry& e : entries) {
-        if (e.owner_id >= row_of_id.size() || row_of_id[e.owner_id] == UINT32_MAX)
-            throw InputError(fmt::format("contact history names unknown particle id {}", e.owner_id));
-        const std::uint32_t i = row_of_id[e.owner_id];
-        bool found = false;
-        for (std::uint32_t s = offset_[i]; s < offset_[i + 1] && !found; ++s)
-            if (p.id[partner_[s]] == e.partner_id) {
-                history_[s] = e.history;
-                found = true;
-            }
-        if (!found)
-            throw InputError(fmt::format("contact history pair ({}, {}) is not in the neighbor list",
-                                         e.owner_id, e.partner_id));
-    }
 }
 
 } // namespace drydem

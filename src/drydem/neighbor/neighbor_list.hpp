@@ -62,8 +62,6 @@ public:
         Vec3 history;
     };
     [[nodiscard]] std::vector<Entry> history_entries(const ParticleStore& p) const;
-    /// Restores histories (after a build) from entries, e.g. from a checkpoint.
-    void restore_history(const ParticleStore& p, const std::vector<Entry>& entries);
 
 private:
     struct Grid {
