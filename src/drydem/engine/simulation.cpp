@@ -274,12 +274,13 @@ Simulation::DampingBound Simulation::damping_bound() const {
     const ParticleStore& p = p_;
     const std::size_t n = p.size();
     constexpr double pi = std::numbers::pi;
-    struct Damper {
-        std::uint32_t i, j;
-        double c;
-    };
-    std::vector<Damper> dampers;
-    std::vector<double> own(n, 0.0), lambda(n, 0.0);
+    // Scratch kept between calls: the guard runs at every rebuild and should not allocate.
+    GuardScratch& scratch = guard_scratch_;
+    auto& dampers = scratch.dampers;
+    auto &own = scratch.own, &lambda = scratch.lambda;
+    dampers.clear();
+    own.assign(n, 0.0);
+    lambda.assign(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
         const double r = p.radius[i];
         own[i] = stokes_drag_coefficient(r, ff_.drag);
@@ -324,7 +325,10 @@ Simulation::DampingBound Simulation::damping_bound() const {
 
     // Power iteration for λ_max of S = M^-1/2 (L_c + D) M^-1/2, started at the Gershgorin maximum
     // (plus a small deterministic spread so that no eigenvector is missed).
-    std::vector<double> x(n), u(n), y(n);
+    auto &x = scratch.x, &u = scratch.u, &y = scratch.y;
+    x.resize(n);
+    u.resize(n);
+    y.resize(n);
     for (std::size_t i = 0; i < n; ++i) x[i] = 1e-3 * (1.0 + std::sin(double(i) * 12.9898));
     x[worst] = 1.0;
     double estimate = 0.0;
@@ -337,7 +341,7 @@ Simulation::DampingBound Simulation::damping_bound() const {
             u[i] = x[i] * std::sqrt(p.inv_mass[i]);
             y[i] = own[i] * u[i];
         }
-        for (const Damper& d : dampers) {
+        for (const auto& d : dampers) {
             const double f = d.c * (u[d.i] - u[d.j]);
             y[d.i] += f;
             y[d.j] -= f;

@@ -108,6 +108,15 @@ private:
     StepStats stats_;
     PhaseTimes times_;
     std::uint64_t rebuilds_since_sort_ = 0;
+    struct GuardScratch {
+        struct Damper {
+            std::uint32_t i, j;
+            double c;
+        };
+        std::vector<Damper> dampers;
+        std::vector<double> own, lambda, x, u, y;
+    };
+    mutable GuardScratch guard_scratch_; ///< damping_bound()'s work arrays, reused
     // Per-thread force/torque buffers (thread 0 writes into the store): a fixed reduction order
     // makes results identical run to run for a given thread count.
     std::vector<std::vector<Vec3>> thread_force_, thread_torque_;
