@@ -6,7 +6,9 @@
 # usage: bench/peer_bench.sh [SIZE] [CASES...]
 #   SIZE   75 (default, the settled 47,044-particle bed) or 30
 #   CASES  any of drydem1 drydem2 lig1 lig2 gran1 gran2 hh1 hh2 (default: all)
-# environment: NSTEPS (2000 for 75, 5000 for 30), NWARM (200), OUT (results/peer_bench/<size>um)
+# environment: NSTEPS (2000 for 75, 5000 for 30), NWARM (200), OUT (results/peer_bench/<size>um),
+#   REPEAT (3): rounds over all cases, interleaved; the table takes each case's best round, since a
+#   shared machine's speed drifts by tens of per cent within minutes.
 # Needs: build/drydem (README), and `scripts/install_deps.sh --peers` for liggghts, lmp, mpirun.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,6 +18,7 @@ shift || true
 cases=${*:-drydem1 drydem2 lig1 lig2 gran1 gran2 hh1 hh2}
 if [[ $size == 75 ]]; then nsteps=${NSTEPS:-2000}; else nsteps=${NSTEPS:-5000}; fi
 nwarm=${NWARM:-200}
+repeat=${REPEAT:-3}
 out=${OUT:-$here/results/peer_bench/${size}um}
 mkdir -p "$out"
 data="$out/settled_${size}um.data"
@@ -27,18 +30,22 @@ mpirun="mpirun --allow-run-as-root --oversubscribe"
 V="-var data $data -var nsteps $nsteps -var nwarm $nwarm"
 export OMP_NUM_THREADS=1
 busy() { ps -eo pcpu,comm --sort=-pcpu | awk 'NR>1 && $1>20 && $2!="ps" {print "   WARNING busy process:", $0}'; }
+rm -f "$out"/*.log "$out"/*.json "$out"/*.screen
+for round in $(seq 1 "$repeat"); do
 for c in $cases; do
-  echo "== $c"; busy
+  echo "== $c (round $round)"; busy
+  n="${c}_r${round}"
   case $c in
-    drydem1) OMP_NUM_THREADS=1 "$here/build/drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 1 | tee "$out/drydem1.json" ;;
-    drydem2) OMP_NUM_THREADS=2 "$here/build/drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 2 | tee "$out/drydem2.json" ;;
-    lig1) (cd "$out" && liggghts -in "$peers/in.bench.liggghts" $V -log lig1.log > lig1.screen 2>&1) ;;
-    lig2) (cd "$out" && $mpirun -np 2 liggghts -in "$peers/in.bench.liggghts" $V -log lig2.log > lig2.screen 2>&1) ;;
-    gran1) (cd "$out" && lmp -in "$peers/in.bench.lammps" $V -var model granular -log gran1.log > gran1.screen 2>&1) ;;
-    gran2) (cd "$out" && $mpirun -np 2 lmp -in "$peers/in.bench.lammps" $V -var model granular -log gran2.log > gran2.screen 2>&1) ;;
-    hh1) (cd "$out" && lmp -in "$peers/in.bench.lammps" $V -var model hh -log hh1.log > hh1.screen 2>&1) ;;
-    hh2) (cd "$out" && $mpirun -np 2 lmp -in "$peers/in.bench.lammps" $V -var model hh -log hh2.log > hh2.screen 2>&1) ;;
+    drydem1) OMP_NUM_THREADS=1 "$here/build/drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 1 | tee "$out/$n.json" ;;
+    drydem2) OMP_NUM_THREADS=2 "$here/build/drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 2 | tee "$out/$n.json" ;;
+    lig1) (cd "$out" && liggghts -in "$peers/in.bench.liggghts" $V -log "$n.log" > "$n.screen" 2>&1) ;;
+    lig2) (cd "$out" && $mpirun -np 2 liggghts -in "$peers/in.bench.liggghts" $V -log "$n.log" > "$n.screen" 2>&1) ;;
+    gran1) (cd "$out" && lmp -in "$peers/in.bench.lammps" $V -var model granular -log "$n.log" > "$n.screen" 2>&1) ;;
+    gran2) (cd "$out" && $mpirun -np 2 lmp -in "$peers/in.bench.lammps" $V -var model granular -log "$n.log" > "$n.screen" 2>&1) ;;
+    hh1) (cd "$out" && lmp -in "$peers/in.bench.lammps" $V -var model hh -log "$n.log" > "$n.screen" 2>&1) ;;
+    hh2) (cd "$out" && $mpirun -np 2 lmp -in "$peers/in.bench.lammps" $V -var model hh -log "$n.log" > "$n.screen" 2>&1) ;;
     *) echo "unknown case $c"; exit 2 ;;
   esac
+done
 done
 /usr/bin/python3 "$here/bench/peer_table.py" "$out"
