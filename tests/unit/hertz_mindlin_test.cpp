@@ -219,3 +219,29 @@ TEST(HertzMindlin, NewtonsThirdLawUnderSwap) {
 }
 
 } // namespace
+
+namespace {
+using namespace drydem;
+
+// Rigid-body check (issue 3: every pair law): a touching pair that translates and rotates as one
+// rigid body (v_i - v_j = Ω × (x_i - x_j), ω_i = ω_j = Ω) feels only the elastic normal force —
+// no damping, no tangential spring, no torque — for unequal radii too (lever arms r - δ/2).
+TEST(HertzMindlin, RigidBodyMotionGivesOnlyTheElasticForce) {
+    const HertzMindlinParams p = mix_hertz_mindlin(142e9, 0.3, 142e9, 0.3, 0.5, 0.8, 0.1);
+    const double r_i = 4.3e-6, r_j = 0.75e-6, overlap = 10e-9, d = r_i + r_j - overlap;
+    const Vec3 n = Vec3{1.0, 2.0, -2.0} / 3.0;
+    const Vec3 omega{3e5, -1e5, 2e5}, v_j{0.3, -0.2, 0.1};
+    const Vec3 v_i = v_j + cross(omega, -d * n); // x_i - x_j = -d n
+    const double m_i = 4.0 / 3.0 * std::numbers::pi * std::pow(r_i, 3) * 4740;
+    const double m_j = 4.0 / 3.0 * std::numbers::pi * std::pow(r_j, 3) * 1187.5;
+    const PairGeometry g = make_pair_geometry(d * n, d, r_i, r_j, m_i, m_j, v_i, v_j, omega, omega);
+    Vec3 xi{};
+    const PairForce f = hertz_mindlin(g, p, xi, 1e-11);
+    const double elastic = 4.0 / 3.0 * p.e_star * std::sqrt(g.r_eff) * std::pow(overlap, 1.5);
+    EXPECT_NEAR(norm(f.force_i + elastic * n), 0.0, 1e-9 * elastic);
+    EXPECT_LT(norm(xi), 1e-12 * overlap);
+    EXPECT_LT(norm(f.torque_i), 1e-9 * elastic * r_i);
+    EXPECT_LT(norm(f.torque_j), 1e-9 * elastic * r_i);
+}
+
+} // namespace

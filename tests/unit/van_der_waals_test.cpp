@@ -80,3 +80,20 @@ TEST(VanDerWaals, DisabledAndRange) {
 }
 
 } // namespace
+
+// Rigid-body check (issue 3: every pair law): the attraction depends on the geometry only, so a
+// pair moving as one rigid body feels exactly the force of the pair at rest, and no torque.
+TEST(VanDerWaals, RigidBodyMotionChangesNothing) {
+    const drydem::VanDerWaalsParams p{4.64e-13, 5e-9, 0.75e-6};
+    const double r = 0.75e-6, d = 2 * r + 40e-9;
+    const drydem::Vec3 n{0.0, 0.6, 0.8}, omega{2e5, -3e5, 1e5}, v_j{0.5, 0.1, -0.2};
+    const drydem::Vec3 v_i = v_j + drydem::cross(omega, -d * n);
+    const auto moving = drydem::van_der_waals(
+        drydem::make_pair_geometry(d * n, d, r, r, 2e-15, 2e-15, v_i, v_j, omega, omega), p);
+    const auto resting =
+        drydem::van_der_waals(drydem::make_pair_geometry(d * n, d, r, r, 2e-15, 2e-15, {}, {}, {}, {}), p);
+    EXPECT_EQ(moving.force_i.x, resting.force_i.x);
+    EXPECT_EQ(moving.force_i.y, resting.force_i.y);
+    EXPECT_EQ(moving.force_i.z, resting.force_i.z);
+    EXPECT_EQ(drydem::norm(moving.torque_i) + drydem::norm(moving.torque_j), 0.0);
+}
