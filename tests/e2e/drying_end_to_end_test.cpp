@@ -6,6 +6,7 @@
 // and the end criterion (top - level > largest diameter) keeps its meaning. Physics, scaling and
 // time step are the paper's.
 #include "drydem/drying/drying_run.hpp"
+#include "drydem/core/stop_request.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <gtest/gtest.h>
@@ -114,5 +115,24 @@ TEST(DryingEndToEnd, BlowUpStopsWithDiagnosisAndKeepsOutputs) {
     EXPECT_EQ(summary["status"], "failed");
     EXPECT_EQ(summary["error"], r.error);
     EXPECT_TRUE(std::filesystem::exists(dir / "timeseries.csv"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "final.csv"));
+}
+
+// A stop request (what Ctrl-C / SIGTERM send) ends the run after the current step with the
+// results so far written, like a failure; the flag is cleared afterwards for the other tests.
+TEST(DryingEndToEnd, StopRequestEndsTheRunAndKeepsOutputs) {
+    const Config c = load_config(default_config_toml(), "default",
+                                 {"run.name=stop", "run.threads=1", "film.box_x=36um",
+                                  "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
+                                  "formulation.ncm_diameters=[\"3 um\"]", "output.snapshot_every=0"});
+    const auto dir = testing_support::temp_dir();
+    request_stop(2);
+    const DryingResult r = run_quietly(c, dir);
+    request_stop(0);
+    ASSERT_FALSE(r.completed);
+    EXPECT_NE(r.error.find("interrupted by signal 2"), std::string::npos) << r.error;
+    EXPECT_EQ(r.steps, 1);
+    std::ifstream js(dir / "summary.json");
+    EXPECT_EQ(nlohmann::json::parse(js)["status"], "failed");
     EXPECT_TRUE(std::filesystem::exists(dir / "final.csv"));
 }

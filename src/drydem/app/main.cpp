@@ -3,12 +3,14 @@
 // 1 run failure, 2 bad input.
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/core/stop_request.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include "drydem/git_hash.hpp"
 #include <fmt/format.h>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 
@@ -90,6 +92,9 @@ int main(int argc, char** argv) {
             return 0;
         }
         const Config c = load(config_file, sets);
+        // Ctrl-C / SIGTERM: finish the step, write the results so far, exit 1.
+        std::signal(SIGINT, [](int sig) { request_stop(sig); });
+        std::signal(SIGTERM, [](int sig) { request_stop(sig); });
         RunOptions o;
         o.output_dir = out_dir.empty() ? default_output_dir(c) : out_dir;
         if (!particles.empty()) o.particles_file = particles;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/core/stop_request.hpp"
 #include "drydem/drying/liquid_level.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/simulation.hpp"
@@ -265,6 +266,10 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                 next_snapshot += scaled.sim_time(c.snapshot_every);
             }
             if (done) break;
+            if (const int sig = stop_requested())
+                throw RunError(fmt::format("interrupted by signal {} at process time {:.4g} s; the "
+                                           "results so far are written",
+                                           sig, scaled.process_time(t)));
             if (timeout)
                 throw RunError(fmt::format("no final thickness within run.max_process_time = {} s "
                                            "(layer top {:.4g} um, level {:.4g} um)",
