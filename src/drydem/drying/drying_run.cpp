@@ -127,10 +127,11 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     es.threads = c.threads;
     es.sort_every = c.sort_every;
     es.overlap_limit = c.overlap_limit;
+    // The level is known before the first force evaluation: forces (and contact histories) are
+    // computed once at t = 0.
+    es.initial_liquid_level = schedule.level(0.0);
     Simulation sim(std::move(particles), box, make_drying_force_field(c, recipe, scaled), es);
-    sim.set_liquid_level(schedule.level(0.0));
     sim.set_liquid_level_schedule([schedule](double t) { return schedule.level(t); });
-    sim.compute_forces();
 
     // --- stability guard (M-9.2) ---
     // The explicit damping modes (lubrication, drag) are stable while Δt λ_max < 2. "adapt" lowers

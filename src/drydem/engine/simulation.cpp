@@ -12,7 +12,7 @@ namespace drydem {
 
 Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(particles)), box_(box), ff_(std::move(forces)), settings_(settings),
-      nl_(settings.skin) {
+      nl_(settings.skin), liquid_level_(settings.initial_liquid_level) {
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));

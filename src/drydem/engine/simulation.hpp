@@ -18,6 +18,7 @@ struct EngineSettings {
     int threads = 0;             ///< OpenMP threads; 0 = runtime default
     int sort_every = 10;         ///< spatial re-sort every this many rebuilds (0 = never)
     double overlap_limit = 1.0;  ///< stop when an overlap exceeds this fraction of the smaller radius
+    double initial_liquid_level = 1.0e30; ///< z_L at t = 0 [m] (far above: no capillary force)
 };
 
 /// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).
@@ -101,7 +102,7 @@ private:
     int threads_ = 1;
     std::int64_t step_ = 0;
     double time_ = 0.0;
-    double liquid_level_ = 1.0e30;
+    double liquid_level_;
     std::function<double(double)> level_at_;
     bool force_rebuild_ = true;
     bool non_finite_ = false;
