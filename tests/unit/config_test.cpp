@@ -130,3 +130,47 @@ TEST(Config, ToTomlRoundTrip) {
 }
 
 } // namespace
+
+// Minimum image needs a box side of at least twice the widest reach plus skin: for two 11.35 um
+// spheres d + r_L = 1.5 d (M-4.1), so 2 (17.025 + 0.1) um = 34.25 um; 20 um spheres need 60.2 um.
+TEST(Config, BoxMustHoldTwiceTheLargestInteractionRange) {
+    EXPECT_NO_THROW(load_config("", "t", {"film.box_x=36um", "film.box_y=36um"}));
+    const std::string msg = input_error("", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=50um",
+                                             "film.box_y=80um"});
+    EXPECT_NE(msg.find("film.box_x"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("50 um"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("60.2"), std::string::npos) << msg;
+    EXPECT_NO_THROW(load_config("", "t", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=61um",
+                                          "film.box_y=61um"}));
+}
+
+TEST(Config, NegativeOrZeroDiameterIsRejected) {
+    const std::string msg = input_error("", {"formulation.ncm_diameters=[\"-3 um\"]"});
+    EXPECT_NE(msg.find("formulation.ncm_diameters"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("out of range"), std::string::npos) << msg;
+    EXPECT_NE(input_error("", {"formulation.cb_diameter=0"}).find("formulation.cb_diameter"), std::string::npos);
+}
+
+TEST(Config, StudyMeasuredValuesNeedOnePerMeasuredLoading) {
+    const Config ok = load_config("[study]\nloadings = [\"20.1 mg/cm^2\", \"25.2 mg/cm^2\"]\nseeds = 2\n"
+                                  "measured_loadings = [\"20.1 mg/cm^2\"]\nmeasured_thickness = [\"84 um\"]\n",
+                                  "t");
+    ASSERT_EQ(ok.study_loadings.size(), 2u);
+    EXPECT_DOUBLE_EQ(ok.study_loadings[1], 0.252);
+    EXPECT_DOUBLE_EQ(ok.measured_thickness[0], 84e-6);
+    EXPECT_TRUE(ok.measured_density.empty());
+    const std::string msg = input_error("[study]\nmeasured_loadings = [\"20.1 mg/cm^2\", \"25.2 mg/cm^2\"]\n"
+                                        "measured_thickness = [\"84 um\"]\n");
+    EXPECT_NE(msg.find("study.measured_thickness"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("one per measured loading"), std::string::npos) << msg;
+    EXPECT_NE(input_error("[study]\nseeds = 0\n").find("study.seeds"), std::string::npos);
+    // Arrays that must not be empty still say so.
+    EXPECT_NE(input_error("[formulation]\nncm_diameters = []\n").find("non-empty"), std::string::npos);
+}
+
+TEST(Config, WrongTypeNamesKey) {
+    const std::string msg = input_error("[run]\nseed = \"many\"\n");
+    EXPECT_NE(msg.find("run.seed"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("integer"), std::string::npos) << msg;
+    EXPECT_NE(input_error("[lubrication]\nenabled = 1\n").find("true or false"), std::string::npos);
+}

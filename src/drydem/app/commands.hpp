@@ -2,7 +2,9 @@
 #pragma once
 #include "drydem/io/config.hpp"
 #include <cstdint>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace drydem::app {
 
@@ -18,5 +20,17 @@ struct BenchOptions {
     double viscosity = 0.18, gravity = 9.81e6, dt = 2e-10, skin = 0.3e-6;
 };
 int run_bench(const BenchOptions& o);
+
+/// `drydem study`: loadings x seeds as `drydem run` child processes, then study.csv/.json + plot.
+/// Returns 0 when every run completed, 1 otherwise (the table lists the failures).
+struct StudyOptions {
+    std::filesystem::path output_dir;
+    std::vector<double> loadings; ///< [kg/m^2]; empty: study.loadings of the config
+    int seeds = 0;                ///< 0: study.seeds of the config
+    int threads = 0;              ///< per run; 0: cores / runs, at least 1
+    int jobs = 0;                 ///< runs at a time; 0: cores / threads
+    bool quiet = false, plots = true;
+};
+int run_study(const Config& base, const StudyOptions& o);
 
 } // namespace drydem::app

@@ -5,6 +5,7 @@
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/drying/drying_run.hpp"
+#include "drydem/io/units.hpp"
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include "drydem/git_hash.hpp"
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
     cli.require_subcommand(0, 1);
     cli.set_version_flag("--version", fmt::format("drydem {} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH));
 
-    std::string config_file, out_dir, particles;
+    std::string config_file, out_dir, particles, resume_dir;
     std::vector<std::string> sets;
     std::int64_t seed = -1;
     int threads = -1;
@@ -50,6 +51,10 @@ int main(int argc, char** argv) {
     run->add_option("--threads", threads, "OpenMP threads (= --set run.threads=N)");
     run->add_option("--particles", particles, "start from these particles (CSV, LAMMPS data or dump)")
         ->check(CLI::ExistingFile);
+    run->add_option("--resume", resume_dir,
+                    "continue the run in this output folder from its checkpoint (same config, "
+                    "same threads: bit-identical to an uninterrupted run)")
+        ->check(CLI::ExistingDirectory);
     run->add_flag("--quiet", quiet, "only warnings and errors on the console");
     run->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
 
@@ -61,6 +66,25 @@ int main(int argc, char** argv) {
     std::string which;
     config->add_option("which", which, "'default': the embedded default configuration")
         ->required()->check(CLI::IsMember({"default"}));
+
+    app::StudyOptions study_opt;
+    std::string study_loadings;
+    auto* study = cli.add_subcommand("study", "loadings x seeds: runs, study.csv/.json and the thickness/density "
+                                              "vs loading plot (paper Fig. 6)");
+    study->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
+    study->add_option("-o,--output", out_dir, "output folder (default out/<name>-study-<timestamp>)");
+    study->add_option("--set", sets, "override a key")->take_all();
+    study->add_option("--loadings", study_loadings,
+                      "areal loadings, comma separated, in mg/cm^2 or with units (default study.loadings, "
+                      "else film.areal_loading)");
+    study->add_option("--seeds", study_opt.seeds, "runs per loading (default study.seeds)")
+        ->check(CLI::PositiveNumber);
+    study->add_option("--threads", study_opt.threads, "threads per run (default cores / runs)")
+        ->check(CLI::PositiveNumber);
+    study->add_option("--jobs", study_opt.jobs, "runs at a time (default cores / threads)")
+        ->check(CLI::PositiveNumber);
+    study->add_flag("--quiet", study_opt.quiet, "only the final table");
+    study->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
 
     app::BenchOptions bench_opt;
     auto* bench = cli.add_subcommand("bench", "the peers' granular benchmark (../shared/peers) in DryDEM");
@@ -76,8 +100,8 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     try {
-        if (seed >= 0) sets.push_back(fmt::format("run.seed={}", seed));
-        if (threads >= 0) sets.push_back(fmt::format("run.threads={}", threads));
+        if (seed >= 0 && resume_dir.empty()) sets.push_back(fmt::format("run.seed={}", seed));
+        if (threads >= 0 && resume_dir.empty()) sets.push_back(fmt::format("run.threads={}", threads));
         if (*config) {
             std::cout << default_config_toml();
             return 0;
@@ -87,16 +111,42 @@ int main(int argc, char** argv) {
             app::print_check(load(config_file, sets));
             return 0;
         }
+        if (*study) {
+            const Config c = load(config_file, sets);
+            study_opt.output_dir = out_dir.empty() ? default_output_dir(c) + "-study" : out_dir;
+            study_opt.plots = !no_plots;
+            std::size_t start = 0;
+            while (start < study_loadings.size()) {
+                std::size_t comma = study_loadings.find(',', start);
+                if (comma == std::string::npos) comma = study_loadings.size();
+                std::string item = study_loadings.substr(start, comma - start);
+                start = comma + 1;
+                if (item.find_first_not_of(" ") == std::string::npos) continue;
+                // A bare number is mg/cm^2, the unit of the paper and of process engineers.
+                if (item.find_first_not_of("0123456789.eE+- ") == std::string::npos) item += " mg/cm^2";
+                study_opt.loadings.push_back(parse_quantity(item, Dimension::areal_density, "--loadings"));
+            }
+            return app::run_study(c, study_opt);
+        }
         if (!*run) {
             std::cout << cli.help();
             return 0;
         }
-        const Config c = load(config_file, sets);
+        if (!resume_dir.empty()) {
+            if (!config_file.empty() || !sets.empty() || !particles.empty() || !out_dir.empty() ||
+                seed >= 0)
+                throw InputError("--resume DIR continues a run with the config stored in its "
+                                 "checkpoint; CONFIG, --set, --seed, --particles and -o are not "
+                                 "allowed with it (only --threads, --quiet, --no-plots)");
+        }
+        Config c = resume_dir.empty() ? load(config_file, sets) : resume_config(resume_dir);
+        if (!resume_dir.empty() && threads >= 0) c.threads = threads;
         // Ctrl-C / SIGTERM: finish the step, write the results so far, exit 1.
         std::signal(SIGINT, [](int sig) { request_stop(sig); });
         std::signal(SIGTERM, [](int sig) { request_stop(sig); });
         RunOptions o;
-        o.output_dir = out_dir.empty() ? default_output_dir(c) : out_dir;
+        o.output_dir = !resume_dir.empty() ? resume_dir : out_dir.empty() ? default_output_dir(c) : out_dir;
+        o.resume = !resume_dir.empty();
         if (!particles.empty()) o.particles_file = particles;
         o.quiet = quiet;
         o.plots = !no_plots;

@@ -5,6 +5,7 @@
 #include "drydem/drying/liquid_level.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/simulation.hpp"
+#include "drydem/io/checkpoint.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/io/snapshot_writers.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -20,14 +21,16 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <type_traits>
+#include <unistd.h>
 
 namespace drydem {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::shared_ptr<spdlog::logger> make_logger(const std::filesystem::path& dir, bool quiet) {
-    auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "log.txt").string(), true);
+std::shared_ptr<spdlog::logger> make_logger(const std::filesystem::path& dir, bool quiet, bool append) {
+    auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "log.txt").string(), !append);
     auto console = std::make_shared<spdlog::sinks::stderr_color_sink_mt>();
     console->set_level(quiet ? spdlog::level::warn : spdlog::level::info);
     console->set_pattern("%v");
@@ -83,26 +86,94 @@ ParticleStore particles_from_file(const std::filesystem::path& file, const FilmR
     return p;
 }
 
+/// The drying run's own progress beside the engine state: what a resumed run needs to continue
+/// its end criterion, outputs and diagnostics exactly where the checkpoint was taken.
+struct RunProgress {
+    bool final_found = false, warned_c21 = false, warned_overlap = false;
+    double final_thickness = 0.0, process_time_final = 0.0;
+    double t_end = INFINITY, next_row = 0.0, next_snapshot = 0.0;
+    double dt_min = 0.0, dt_lambda = 0.0, warned_lambda = 0.0;
+    std::uint64_t builds_seen = 0;
+    std::int32_t frame = 0;           ///< snapshot frames written
+    std::int32_t threads = 1;         ///< threads the run used
+    double wall_before = 0.0;         ///< wall-clock seconds of the sessions before this one
+    std::uint64_t series_bytes = 0;   ///< timeseries.csv length at the checkpoint
+    std::uint64_t dump_bytes = 0;     ///< dump.lammpstrj length at the checkpoint
+    std::uint64_t seed = 0;
+};
+static_assert(std::is_trivially_copyable_v<RunProgress>);
+
+struct Checkpoint {
+    std::string config_toml;
+    RunProgress progress;
+    EngineState engine;
+};
+
+Checkpoint read_checkpoint(const std::filesystem::path& output_dir) {
+    const auto file = checkpoint_file(output_dir);
+    const std::vector<unsigned char> bytes = read_checkpoint_file(file);
+    BinaryReader r(bytes, file.string());
+    Checkpoint ck;
+    ck.config_toml = r.str();
+    ck.progress = r.pod<RunProgress>();
+    ck.engine = read_engine_state(r);
+    if (!r.at_end()) throw InputError(fmt::format("{}: unexpected data after the state", file.string()));
+    return ck;
+}
+
+/// Cuts a file back to `size` bytes: output written after the checkpoint is replayed.
+void truncate_file(const std::filesystem::path& file, std::uint64_t size) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) {
+        if (size == 0) return;
+        throw InputError(fmt::format("--resume: {} is missing", file.string()));
+    }
+    if (std::filesystem::file_size(file) < size)
+        throw InputError(fmt::format("--resume: {} is shorter than at the checkpoint", file.string()));
+    std::filesystem::resize_file(file, size, ec);
+    if (ec) throw RunError(fmt::format("cannot truncate {}: {}", file.string(), ec.message()));
+}
+
 } // namespace
+
+std::filesystem::path checkpoint_file(const std::filesystem::path& output_dir) {
+    return output_dir / "checkpoint" / "state.bin";
+}
+
+Config resume_config(const std::filesystem::path& output_dir) {
+    const Checkpoint ck = read_checkpoint(output_dir);
+    Config c = load_config(ck.config_toml, checkpoint_file(output_dir).string());
+    c.threads = ck.progress.threads;
+    return c;
+}
 
 DryingResult run_drying(const Config& c, const RunOptions& opt) {
     namespace fs = std::filesystem;
     const auto wall_start = Clock::now();
+    std::optional<Checkpoint> resumed;
+    if (opt.resume) resumed = read_checkpoint(opt.output_dir);
     fs::create_directories(opt.output_dir / "snapshots");
-    auto log = make_logger(opt.output_dir, opt.quiet);
-    {
+    fs::create_directories(opt.output_dir / "checkpoint");
+    auto log = make_logger(opt.output_dir, opt.quiet, opt.resume);
+    if (!opt.resume) {
         std::ofstream cfg(opt.output_dir / "config.toml");
         cfg << to_toml(c);
     }
+    RunProgress pr;
+    if (resumed) pr = resumed->progress;
 
     // --- set-up (M-1) and scaling (M-7) ---
     const FilmRecipe recipe = make_recipe(c);
     const ScaledParameters scaled = scale_parameters(c);
     const Box box{c.box_x, c.box_y};
-    ParticleStore particles = opt.particles_file
-                                  ? particles_from_file(*opt.particles_file, recipe, box)
-                                  : insert_particles(recipe, box, recipe.wet_film_height, c.seed);
-    if (opt.particles_file) {
+    ParticleStore particles;
+    if (resumed)
+        ; // the particles come with the engine state
+    else if (opt.particles_file)
+        particles = particles_from_file(*opt.particles_file, recipe, box);
+    else
+        particles = insert_particles(recipe, box, recipe.wet_film_height, c.seed);
+    if (opt.particles_file && !resumed) {
         double top = 0.0;
         for (std::size_t i = 0; i < particles.size(); ++i)
             top = std::max(top, particles.position[i].z + particles.radius[i]);
@@ -111,8 +182,9 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                       "level H_wet = {:.4g} um of this config (film.areal_loading); the end "
                       "criterion may fire at once", top * 1e6, recipe.wet_film_height * 1e6);
     }
+    const ParticleStore& species_of = resumed ? resumed->engine.particles : particles;
     std::size_t n_ncm = 0, n_cb = 0;
-    for (std::uint8_t s : particles.species) (recipe.species[s].is_cb ? n_cb : n_ncm)++;
+    for (std::uint8_t s : species_of.species) (recipe.species[s].is_cb ? n_cb : n_ncm)++;
     const double final_gap = c.final_gap > 0.0 ? c.final_gap : recipe.largest_diameter();
     LiquidLevelSchedule schedule{recipe.wet_film_height, scaled.level_speeds_scaled,
                                  scaled.zone_duration_scaled};
@@ -130,14 +202,26 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     // The level is known before the first force evaluation: forces (and contact histories) are
     // computed once at t = 0.
     es.initial_liquid_level = schedule.level(0.0);
-    Simulation sim(std::move(particles), box, make_drying_force_field(c, recipe, scaled), es);
+    Simulation sim = resumed ? Simulation(std::move(resumed->engine), box,
+                                          make_drying_force_field(c, recipe, scaled), es)
+                             : Simulation(std::move(particles), box,
+                                          make_drying_force_field(c, recipe, scaled), es);
     sim.set_liquid_level_schedule([schedule](double t) { return schedule.level(t); });
+    if (resumed) {
+        if (sim.threads() != pr.threads)
+            log->warn("--resume with {} threads where the run used {}: the continuation is valid "
+                      "but not bit-identical to an uninterrupted run", sim.threads(), pr.threads);
+        log->info("resumed from the checkpoint at step {} (process time {:.4f} s)", sim.step_count(),
+                  scaled.process_time(sim.time()));
+    }
+    pr.threads = sim.threads();
+    pr.seed = c.seed;
 
     // --- stability guard (M-9.2) ---
     // The explicit damping modes (lubrication, drag) are stable while Δt λ_max < 2. "adapt" lowers
     // the step to 1.5/λ_max when Δt λ_max exceeds 1.8 and returns to run.time_step once that is
     // safe again (never above it); "refuse" stops the run; "warn" only warns.
-    double warned_lambda = 0.0, dt_min = c.time_step;
+    if (!resumed) pr.dt_min = c.time_step;
     auto guard = [&](bool at_start) {
         const auto b = sim.damping_bound();
         const double dt = sim.settings().dt, lambda = b.dt_lambda / dt;
@@ -148,7 +232,7 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                     log->debug("step {}: dt {:.3g} -> {:.3g} s (dt*Lambda was {:.3g} at particle {})",
                                sim.step_count(), dt, target, b.dt_lambda, b.particle_id);
                 sim.set_time_step(target);
-                dt_min = std::min(dt_min, target);
+                pr.dt_min = std::min(pr.dt_min, target);
             }
             return lambda * sim.settings().dt;
         }
@@ -163,32 +247,50 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                 throw RunError(msg);
             }
             log->warn("{}", msg);
-        } else if (b.dt_lambda > 1.5 && b.dt_lambda > warned_lambda + 0.05) {
-            warned_lambda = b.dt_lambda; // warn again only when it keeps rising
+        } else if (b.dt_lambda > 1.5 && b.dt_lambda > pr.warned_lambda + 0.05) {
+            pr.warned_lambda = b.dt_lambda; // warn again only when it keeps rising
             log->warn("time step {:.3g} s is close to the damping stability bound: dt*Lambda = "
                       "{:.3g} at particle {}", dt, b.dt_lambda, b.particle_id);
         }
         return b.dt_lambda;
     };
-    double dt_lambda = guard(true);
+    // A resumed run must not re-run the guard here: the uninterrupted run only runs it at rebuilds.
+    if (!resumed) pr.dt_lambda = guard(true);
     log->info("threads {}, dt = {:.3g} s (scaled), dt*Lambda = {:.3g} (stable < 2), level speeds "
-              "{} m/s (scaled)", sim.threads(), sim.settings().dt, dt_lambda,
+              "{} m/s (scaled)", sim.threads(), sim.settings().dt, pr.dt_lambda,
               fmt::join(scaled.level_speeds_scaled, ", "));
 
-    // --- outputs ---
-    CsvSeriesWriter series(opt.output_dir / "timeseries.csv",
+    // --- outputs (a resumed run cuts them back to the checkpoint and continues them) ---
+    const fs::path series_file = opt.output_dir / "timeseries.csv";
+    const fs::path dump_file = opt.output_dir / "snapshots" / "dump.lammpstrj";
+    if (resumed) {
+        truncate_file(series_file, pr.series_bytes);
+        truncate_file(dump_file, pr.dump_bytes);
+    }
+    CsvSeriesWriter series(series_file,
                            {"process_time_s", "sim_time_s", "step", "liquid_level_um",
                             "film_thickness_um", "film_top_p99_um", "kinetic_energy_J", "contacts",
                             "wall_contacts", "max_overlap_rel", "particles_at_level",
-                            "dt_lambda", "time_step_s", "zone"});
+                            "dt_lambda", "time_step_s", "zone"},
+                           opt.resume);
     PvdWriter pvd(opt.output_dir / "snapshots" / "particles.pvd");
-    std::ofstream dump(opt.output_dir / "snapshots" / "dump.lammpstrj");
-    int frame = 0;
+    PvdWriter level_pvd(opt.output_dir / "snapshots" / "liquid_level.pvd");
+    if (resumed) {
+        for (PvdWriter* w : {&pvd, &level_pvd}) {
+            w->load_existing();
+            w->truncate(std::size_t(pr.frame));
+        }
+    }
+    std::ofstream dump(dump_file, resumed ? std::ios::app : std::ios::trunc);
     auto snapshot = [&]() {
-        const std::string name = fmt::format("frame_{:05d}.vtp", frame++);
+        const std::string name = fmt::format("frame_{:05d}.vtp", pr.frame++);
         const double tp = scaled.process_time(sim.time());
-        write_vtp(opt.output_dir / "snapshots" / name, sim.particles(), sim.time(), tp);
+        write_vtp(opt.output_dir / "snapshots" / name, sim.particles(), sim.time(), tp,
+                  sim.coordination());
         pvd.add(tp, name);
+        const std::string level_name = fmt::format("level_{:05d}.vtp", pr.frame - 1);
+        write_level_vtp(opt.output_dir / "snapshots" / level_name, box, sim.liquid_level(), tp);
+        level_pvd.add(tp, level_name);
         append_lammps_dump(dump, sim.particles(), box, sim.step_count(), sim.stats().layer_top);
         dump.flush();
     };
@@ -205,43 +307,71 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                                  double(st.wall_contacts),
                                  st.max_overlap_rel,
                                  double(particles_cutting_level(sim.particles(), sim.liquid_level())),
-                                 dt_lambda,
+                                 pr.dt_lambda,
                                  sim.settings().dt,
                                  double(schedule.zone(sim.time()) + 1)};
         series.row(values);
     };
+    auto wall_total = [&]() {
+        return pr.wall_before + std::chrono::duration<double>(Clock::now() - wall_start).count();
+    };
+    auto write_checkpoint = [&]() {
+        dump.flush();
+        pr.series_bytes = fs::file_size(series_file);
+        pr.dump_bytes = fs::file_size(dump_file);
+        RunProgress saved = pr;
+        saved.wall_before = wall_total();
+        BinaryWriter w;
+        w.str(to_toml(c));
+        w.pod(saved);
+        write_engine_state(w, sim.state());
+        write_checkpoint_file(checkpoint_file(opt.output_dir), w);
+        log->debug("checkpoint at step {} (process time {:.4f} s)", sim.step_count(),
+                   scaled.process_time(sim.time()));
+    };
+    // One updating line on a terminal; plain log lines otherwise (and always in log.txt).
+    const bool tty = !opt.quiet && isatty(STDERR_FILENO);
+    bool progress_shown = false;
+    auto clear_progress = [&]() {
+        if (progress_shown) std::fputs("\r\033[K", stderr);
+        progress_shown = false;
+    };
 
     DryingResult result;
     nlohmann::json summary;
-    bool final_found = false, warned_c21 = false, warned_overlap = false;
-    double t_end = INFINITY;
     const double t_max = scaled.sim_time(c.max_process_time);
-    double next_row = 0.0, next_snapshot = 0.0;
-    std::uint64_t builds_seen = sim.neighbors().builds();
-    auto last_progress = Clock::now();
+    std::uint64_t& builds_seen = pr.builds_seen;
+    if (!resumed) builds_seen = sim.neighbors().builds();
+    auto last_progress = Clock::now(), last_checkpoint = Clock::now();
+    const double t_session = sim.time();
+    const std::int64_t step_session = sim.step_count();
     const double areal_mass = recipe.realised_dry_mass() / recipe.base_area;
     try {
-        row();
-        snapshot();
-        next_row = scaled.sim_time(c.timeseries_every);
-        next_snapshot = c.snapshot_every > 0 ? scaled.sim_time(c.snapshot_every) : INFINITY;
+        if (!resumed) {
+            row();
+            snapshot();
+            pr.next_row = scaled.sim_time(c.timeseries_every);
+            pr.next_snapshot = c.snapshot_every > 0 ? scaled.sim_time(c.snapshot_every) : INFINITY;
+        }
         while (true) {
             sim.step();
             const double t = sim.time(), level = sim.liquid_level(), top = sim.stats().layer_top;
             // M-8.2: the final thickness is reached once the layer no longer follows the level.
-            if (!final_found && (top - level > final_gap || level <= 0.0)) {
-                final_found = true;
-                result.final_thickness = top;
-                result.process_time_final = scaled.process_time(t);
-                t_end = t + scaled.sim_time(c.relaxation);
+            if (!pr.final_found && (top - level > final_gap || level <= 0.0)) {
+                pr.final_found = true;
+                pr.final_thickness = top;
+                pr.process_time_final = scaled.process_time(t);
+                pr.t_end = t + scaled.sim_time(c.relaxation);
+                clear_progress();
                 if (level <= 0.0)
                     log->warn("the liquid level reached the substrate before the layer top rose "
                               "{:.4g} um above it; final thickness taken there", final_gap * 1e6);
                 log->info("final thickness {:.4f} um at process time {:.3f} s; relaxing for {} s",
-                          top * 1e6, result.process_time_final, c.relaxation);
+                          top * 1e6, pr.process_time_final, c.relaxation);
             }
-            if (!warned_overlap && sim.stats().max_overlap_rel > 0.25) {
-                warned_overlap = true;
+            if (!pr.warned_overlap && sim.stats().max_overlap_rel > 0.25) {
+                pr.warned_overlap = true;
+                clear_progress();
                 log->warn("overlaps exceed 25 % of the smaller radius at process time {:.3f} s "
                           "(max {:.3f}): the scaled capillary and van der Waals forces press the "
                           "particles harder than their contact stiffness resists (model.md C-9)",
@@ -249,50 +379,68 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
             }
             if (sim.neighbors().builds() != builds_seen) {
                 builds_seen = sim.neighbors().builds();
-                dt_lambda = guard(false);
+                pr.dt_lambda = guard(false);
             }
-            if (!warned_c21 && int(t / scaled.zone_duration_scaled) >= int(scaled.level_speeds_scaled.size())) {
-                warned_c21 = true;
+            if (!pr.warned_c21 && int(t / scaled.zone_duration_scaled) >= int(scaled.level_speeds_scaled.size())) {
+                pr.warned_c21 = true;
+                clear_progress();
                 log->warn("the film is still shrinking after the last dryer zone ({:.4g} s); its "
                           "rate is kept (model.md C-21)", scaled.process_time(t));
             }
-            const bool done = t >= t_end;
+            const bool done = t >= pr.t_end;
             const bool timeout = t >= t_max;
-            if (t >= next_row || done || timeout) {
+            if (t >= pr.next_row || done || timeout) {
                 row();
-                next_row += scaled.sim_time(c.timeseries_every);
+                pr.next_row += scaled.sim_time(c.timeseries_every);
             }
-            if (t >= next_snapshot) {
+            if (t >= pr.next_snapshot) {
                 snapshot();
-                next_snapshot += scaled.sim_time(c.snapshot_every);
+                pr.next_snapshot += scaled.sim_time(c.snapshot_every);
             }
             if (done) break;
-            if (const int sig = stop_requested())
+            const auto now = Clock::now();
+            if (const int sig = stop_requested()) {
+                write_checkpoint(); // a stopped run (Ctrl-C, a scheduler's SIGTERM) can resume
                 throw RunError(fmt::format("interrupted by signal {} at process time {:.4g} s; the "
-                                           "results so far are written",
-                                           sig, scaled.process_time(t)));
+                                           "results so far and a checkpoint are written (continue "
+                                           "with drydem run --resume {})",
+                                           sig, scaled.process_time(t), opt.output_dir.string()));
+            }
             if (timeout)
                 throw RunError(fmt::format("no final thickness within run.max_process_time = {} s "
                                            "(layer top {:.4g} um, level {:.4g} um)",
                                            c.max_process_time, top * 1e6, level * 1e6));
-            const auto now = Clock::now();
+            if (c.checkpoint_every > 0 &&
+                std::chrono::duration<double>(now - last_checkpoint).count() >= c.checkpoint_every) {
+                last_checkpoint = now;
+                write_checkpoint();
+            }
             if (std::chrono::duration<double>(now - last_progress).count() >= c.progress_every) {
                 last_progress = now;
                 // ETA: until the level is d_max below the expected final top (the current top,
                 // or at most the thickness of an uncalendered film of ~2.4 g/cm3, M-8.3), plus
-                // the relaxation window.
+                // the relaxation window; at this session's pace.
                 const double expected_top = std::min(top, std::max(areal_mass / 2400.0, 0.5 * top));
                 const double remaining =
-                    final_found ? t_end - t
-                                : std::max(0.0, schedule.time_at_level(std::max(0.0, expected_top - final_gap)) - t) +
-                                      scaled.sim_time(c.relaxation);
+                    pr.final_found ? pr.t_end - t
+                                   : std::max(0.0, schedule.time_at_level(std::max(0.0, expected_top - final_gap)) - t) +
+                                         scaled.sim_time(c.relaxation);
                 const double elapsed = std::chrono::duration<double>(now - wall_start).count();
-                const double eta = elapsed / std::max(t, 1e-30) * remaining;
-                log->info("step {:>9}  t = {:8.3f} s ({:.4g} us sim)  level {:7.3f} um  top {:7.3f} um  "
-                          "contacts {:>7}  {:.3g} particle-steps/s  ETA {:.0f} s",
-                          sim.step_count(), scaled.process_time(t), t * 1e6, level * 1e6, top * 1e6,
-                          sim.stats().contacts,
-                          double(sim.particles().size()) * double(sim.step_count()) / elapsed, eta);
+                const double eta = elapsed / std::max(t - t_session, 1e-30) * remaining;
+                const std::string line = fmt::format(
+                    "step {:>9}  t = {:8.3f} s ({:.4g} us sim)  level {:7.3f} um  top {:7.3f} um  "
+                    "contacts {:>7}  {:.3g} particle-steps/s  ETA {:.0f} s",
+                    sim.step_count(), scaled.process_time(t), t * 1e6, level * 1e6, top * 1e6,
+                    sim.stats().contacts,
+                    double(sim.particles().size()) * double(sim.step_count() - step_session) / elapsed, eta);
+                if (tty) {
+                    log->debug("{}", line); // log.txt only
+                    std::fprintf(stderr, "\r\033[K%s", line.c_str());
+                    std::fflush(stderr);
+                    progress_shown = true;
+                } else {
+                    log->info("{}", line);
+                }
             }
         }
         result.completed = true;
@@ -300,12 +448,17 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     } catch (const RunError& e) {
         result.completed = false;
         result.error = e.what();
+        clear_progress();
         log->error("run failed: {}", e.what());
     }
+    clear_progress();
 
     // --- results (also after a failure: keep what the run reached) ---
     result.steps = sim.step_count();
-    result.wall_time = std::chrono::duration<double>(Clock::now() - wall_start).count();
+    result.wall_time = wall_total();
+    result.final_thickness = pr.final_thickness;
+    result.process_time_final = pr.process_time_final;
+    const bool final_found = pr.final_found;
     if (final_found) {
         const CoatingDensity d = coating_density(areal_mass, result.final_thickness, recipe.solids_density);
         result.density = d.density;
@@ -336,9 +489,10 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     summary["box_um"] = {c.box_x * 1e6, c.box_y * 1e6};
     summary["scaling"] = to_json(scaled);
     summary["time_step_s"] = c.time_step;
-    summary["time_step_min_s"] = dt_min;
+    summary["time_step_min_s"] = pr.dt_min;
     summary["steps"] = result.steps;
     summary["seed"] = c.seed;
+    summary["resumed"] = opt.resume;
     summary["threads"] = sim.threads();
     summary["version"] = fmt::format("{} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH);
     summary["wall_time_s"] = result.wall_time;

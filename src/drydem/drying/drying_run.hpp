@@ -15,6 +15,9 @@ struct RunOptions {
     std::optional<std::filesystem::path> particles_file; ///< start from these instead of insertion
     bool quiet = false;
     bool plots = true; ///< run scripts/plot_run.py with Debian's python3 at the end
+    /// Continue the run whose output folder is output_dir from its checkpoint
+    /// (output_dir/checkpoint/state.bin); the config must be the checkpoint's (resume_config()).
+    bool resume = false;
 };
 
 /// Outcome of a drying run (also written to summary.json).
@@ -34,5 +37,13 @@ struct DryingResult {
 /// bad input detected before the run (exit code 2); a run that fails (blow-up, I/O) returns a
 /// result with completed = false after writing what it has (exit code 1).
 DryingResult run_drying(const Config& config, const RunOptions& options);
+
+/// The resolved config stored in the checkpoint of the run in `output_dir` (InputError if there is
+/// no valid checkpoint). run.threads is the thread count the run used, so that the resumed run
+/// continues bit for bit; override it only knowingly.
+Config resume_config(const std::filesystem::path& output_dir);
+
+/// Where a run keeps its checkpoint.
+std::filesystem::path checkpoint_file(const std::filesystem::path& output_dir);
 
 } // namespace drydem

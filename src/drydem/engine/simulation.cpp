@@ -24,6 +24,40 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
     compute_forces();
 }
 
+Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSettings settings)
+    : p_(std::move(state.particles)), box_(box), ff_(std::move(forces)), settings_(settings),
+      nl_(settings.skin), step_(state.step), time_(state.time), liquid_level_(state.liquid_level),
+      force_rebuild_(state.force_rebuild), stats_(state.stats),
+      rebuilds_since_sort_(state.rebuilds_since_sort) {
+    settings_.dt = state.dt;
+    threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
+    thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
+    thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
+    nl_.restore(std::move(state.neighbors));
+}
+
+std::vector<std::int32_t> Simulation::coordination() const {
+    std::vector<std::int32_t> z(p_.size(), 0);
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        if (p_.position[i].z < p_.radius[i]) ++z[i];
+        if (nl_.owners() != p_.size()) continue;
+        for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
+            const std::uint32_t j = nl_.partner(s);
+            const double reach = p_.radius[i] + p_.radius[j];
+            if (norm2(box_.minimum_image(p_.position[i], p_.position[j])) < reach * reach) {
+                ++z[i];
+                ++z[j];
+            }
+        }
+    }
+    return z;
+}
+
+EngineState Simulation::state() const {
+    return {p_, nl_.state(), step_, time_, liquid_level_, settings_.dt, stats_, force_rebuild_,
+            rebuilds_since_sort_};
+}
+
 void Simulation::rebuild_neighbors() {
     const bool sort = settings_.sort_every > 0 &&
                       (nl_.builds() == 0 || ++rebuilds_since_sort_ >= std::uint64_t(settings_.sort_every));

@@ -36,9 +36,29 @@ struct StepStats {
     double layer_top = 0.0;          ///< max_i (z_i + r_i) [m] (M-8.2)
 };
 
+/// The complete dynamic state of a simulation, for checkpoints: restoring it continues the run
+/// bit for bit as if it had not stopped (same build, same thread count). Forces and torques are
+/// part of it: velocity Verlet's first half kick uses the forces of the previous evaluation, which
+/// saw the half-step velocities, so they cannot be recomputed from the full-step state.
+struct EngineState {
+    ParticleStore particles;          ///< in storage order
+    NeighborList::State neighbors;
+    std::int64_t step = 0;
+    double time = 0.0;                ///< simulated time [s]
+    double liquid_level = 0.0;        ///< [m]
+    double dt = 0.0;                  ///< current Δt (the stability guard may have lowered it)
+    StepStats stats;
+    bool force_rebuild = false;
+    std::uint64_t rebuilds_since_sort = 0;
+};
+
 class Simulation {
 public:
     Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings);
+    /// Continues from a checkpointed state; computes nothing (the state carries its forces).
+    /// settings.dt is replaced by the state's Δt.
+    Simulation(EngineState state, Box box, ForceField forces, EngineSettings settings);
+    [[nodiscard]] EngineState state() const;
 
     /// One velocity-Verlet step with rotation (M-9.1). Throws RunError on a blow-up (non-finite
     /// state or runaway overlap), naming the particle(s) and the cause; the state is then the one
@@ -70,6 +90,8 @@ public:
     [[nodiscard]] const PhaseTimes& phase_times() const { return times_; }
     [[nodiscard]] int threads() const { return threads_; }
 
+    /// Contacts (overlap > 0) per particle in storage order, the substrate counted as a partner.
+    [[nodiscard]] std::vector<std::int32_t> coordination() const;
     /// Translational + rotational kinetic energy [J].
     [[nodiscard]] double kinetic_energy() const;
     /// Total linear momentum [kg m/s].

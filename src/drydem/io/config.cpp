@@ -11,6 +11,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <tuple>
 #include <variant>
 
 namespace drydem {
@@ -27,6 +28,7 @@ struct Field {
     double hi = std::numeric_limits<double>::infinity();
     bool lo_open = false; ///< value must be > lo (else ≥ lo)
     std::vector<std::string_view> choices = {}; ///< allowed strings
+    bool may_be_empty = false;                  ///< arrays: [] allowed
 };
 
 constexpr double inf = std::numeric_limits<double>::infinity();
@@ -95,9 +97,17 @@ const std::vector<Field>& schema() {
         {"numerics.stability_guard", &Config::stability_guard, D::dimensionless, -inf, inf, false,
          {"adapt", "refuse", "warn"}},
         {"numerics.sort_every", &Config::sort_every, D::dimensionless, 0, 1e6},
+        {"study.loadings", &Config::study_loadings, D::areal_density, 0, inf, true, {}, true},
+        {"study.seeds", &Config::study_seeds, D::dimensionless, 1, 1000},
+        {"study.measured_loadings", &Config::measured_loadings, D::areal_density, 0, inf, true, {}, true},
+        {"study.measured_thickness", &Config::measured_thickness, D::length, 0, 1, true, {}, true},
+        {"study.measured_thickness_std", &Config::measured_thickness_std, D::length, 0, 1, false, {}, true},
+        {"study.measured_density", &Config::measured_density, D::density, 0, inf, true, {}, true},
+        {"study.measured_density_std", &Config::measured_density_std, D::density, 0, inf, false, {}, true},
         {"output.timeseries_every", &Config::timeseries_every, D::time, 0, inf, true},
         {"output.snapshot_every", &Config::snapshot_every, D::time, 0, inf},
         {"output.progress_every", &Config::progress_every, D::time, 0, inf, true},
+        {"output.checkpoint_every", &Config::checkpoint_every, D::time, 0, inf},
     };
     return fields;
 }
@@ -182,7 +192,7 @@ void assign(Config& c, const Field& f, const toml::node& n) {
                 c.*member = v->get();
             } else {
                 auto arr = n.as_array();
-                if (!arr || arr->empty())
+                if (!arr || (arr->empty() && !f.may_be_empty))
                     throw InputError(fmt::format("config key '{}': {} must be a non-empty array", f.key, text));
                 T values;
                 for (const toml::node& e : *arr) {
@@ -256,6 +266,29 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
     if (std::abs(mass_sum - 1.0) > 1e-6)
         throw InputError(fmt::format("config keys 'formulation.*_mass_fraction': NCM + PVDF + CB = "
                                      "{:g}, must sum to 1", mass_sum));
+    // Minimum image: a pair's reach plus skin must stay below half the periodic length. The widest
+    // reach is that of two of the largest spheres, d + r_L with r_L = 2R* = d/2 (M-4.1, C-13).
+    if (!c.ncm_diameters.empty()) {
+        const double d_max = *std::max_element(c.ncm_diameters.begin(), c.ncm_diameters.end());
+        const double cb_reach = 1.5 * c.cb_diameter;
+        const double need = 2.0 * (std::max(1.5 * d_max, cb_reach) + c.skin);
+        for (const auto& [key, side] : {std::pair{"film.box_x", c.box_x}, std::pair{"film.box_y", c.box_y}})
+            if (side < need)
+                throw InputError(fmt::format(
+                    "config key '{}': {:g} um is below twice the largest interaction range plus "
+                    "skin ({:g} um for {:g} um spheres); allowed >= {:g} um",
+                    key, side * 1e6, need * 0.5e6, d_max * 1e6, need * 1e6));
+    }
+    const std::size_t n_measured = c.measured_loadings.size();
+    for (const auto& [key, values, optional] :
+         {std::tuple{"study.measured_thickness", &c.measured_thickness, false},
+          std::tuple{"study.measured_thickness_std", &c.measured_thickness_std, true},
+          std::tuple{"study.measured_density", &c.measured_density, true},
+          std::tuple{"study.measured_density_std", &c.measured_density_std, true}})
+        if (values->size() != n_measured && !(optional && values->empty()))
+            throw InputError(fmt::format("config key '{}': {} values for {} study.measured_loadings; "
+                                         "allowed: one per measured loading{}",
+                                         key, values->size(), n_measured, optional ? " or none" : ""));
     return c;
 }
 

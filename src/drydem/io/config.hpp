@@ -83,10 +83,20 @@ struct Config {
     std::string stability_guard = "adapt"; ///< "adapt" | "refuse" | "warn" (M-9.2)
     int sort_every = 10;
 
+    // [study] (drydem study; paper Fig. 6)
+    std::vector<double> study_loadings;  ///< [kg/m^2]; empty = film.areal_loading
+    int study_seeds = 3;                 ///< runs per loading (seeds run.seed, run.seed + 1, ...)
+    std::vector<double> measured_loadings;        ///< [kg/m^2] of the measured points
+    std::vector<double> measured_thickness;       ///< [m], one per measured loading
+    std::vector<double> measured_thickness_std;   ///< [m]; empty or one per measured loading
+    std::vector<double> measured_density;         ///< [kg/m^3]; empty or one per measured loading
+    std::vector<double> measured_density_std;     ///< [kg/m^3]; empty or one per measured loading
+
     // [output]
     double timeseries_every = 0.5;       ///< [s physical]
     double snapshot_every = 10.0;        ///< [s physical]; 0 = no intermediate snapshots
     double progress_every = 10.0;        ///< wall-clock seconds between progress lines
+    double checkpoint_every = 600.0;     ///< wall-clock seconds between checkpoints; 0 = none
 };
 
 /// The embedded default configuration (the paper's 20.1 mg/cm2 case), as TOML text.

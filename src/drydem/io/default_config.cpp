@@ -82,6 +82,15 @@ final_gap = 0                    # end criterion top - level; 0 = largest partic
 relaxation = "10 s"              # physical time after the final thickness (C-22)
 fluid_forces_above_level = "keep"  # C-19
 
+[study]                          # drydem study: loadings x seeds (paper Fig. 6)
+loadings = []                    # e.g. ["20.1 mg/cm^2", "25.2 mg/cm^2"]; empty = film.areal_loading
+seeds = 3                        # runs per loading: seeds run.seed, run.seed + 1, ...
+measured_loadings = []           # measured points plotted beside the simulation (optional)
+measured_thickness = []          # one per measured loading, e.g. "84 um"
+measured_thickness_std = []      # empty or one per measured loading
+measured_density = []            # empty or one per measured loading, e.g. "2.4 g/cm^3"
+measured_density_std = []
+
 [numerics]
 skin = "0.1 um"
 overlap_limit = 1.0              # stop (runaway overlap) when an overlap reaches this fraction of the smaller radius
@@ -93,6 +102,7 @@ sort_every = 10                  # spatial re-sort every N neighbor rebuilds
 timeseries_every = "0.5 s"       # physical time between time-series rows
 snapshot_every = "10 s"          # physical time between snapshots (0 = only the final one)
 progress_every = "10 s"          # wall-clock time between progress lines
+checkpoint_every = "10 min"      # wall-clock time between checkpoints (drydem run --resume DIR); 0 = none
 )toml";
 }
 

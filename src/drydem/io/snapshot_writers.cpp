@@ -90,7 +90,8 @@ auto vec3s(const std::vector<Vec3>& v) {
 
 } // namespace
 
-void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, double process_time) {
+void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, double process_time,
+               std::span<const std::int32_t> coordination) {
     const std::size_t n = p.size();
     fmt::memory_buffer buf;
     const Out out(buf);
@@ -121,6 +122,9 @@ void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, do
     vtp_array(out, "Float64", "velocity", 3, n, vec3s(p.velocity));
     vtp_array(out, "Float64", "omega", 3, n, vec3s(p.omega));
     vtp_array(out, "Float64", "force", 3, n, vec3s(p.force));
+    if (coordination.size() == n)
+        vtp_array(out, "Int32", "coordination", 1, n,
+                  [&](Out o, auto i) { fmt::format_to(o, "{}", coordination[i]); });
     fmt::format_to(out, "      </PointData>\n      <Points>\n");
     vtp_array(out, "Float64", "Points", 3, n, vec3s(p.position));
     fmt::format_to(out, "      </Points>\n      <Verts>\n");
@@ -128,6 +132,41 @@ void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, do
               [](Out o, auto i) { fmt::format_to(o, "{}", i); });
     vtp_array(out, "Int64", "offsets", 1, n, [](Out o, auto i) { fmt::format_to(o, "{}", i + 1); });
     fmt::format_to(out, "      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n");
+    write_file_atomically(file, [&](std::ostream& os) {
+        os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+    });
+}
+
+void write_level_vtp(const fs::path& file, const Box& box, double level, double process_time) {
+    fmt::memory_buffer buf;
+    const Out out(buf);
+    fmt::format_to(out,
+                   "<?xml version=\"1.0\"?>\n"
+                   "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                   "header_type=\"UInt64\">\n"
+                   "  <PolyData>\n"
+                   "    <FieldData>\n"
+                   "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+                   "format=\"ascii\">{0}</DataArray>\n"
+                   "      <DataArray type=\"Float64\" Name=\"liquid_level_um\" NumberOfTuples=\"1\" "
+                   "format=\"ascii\">{1}</DataArray>\n"
+                   "    </FieldData>\n"
+                   "    <Piece NumberOfPoints=\"4\" NumberOfVerts=\"0\" NumberOfLines=\"0\" "
+                   "NumberOfStrips=\"0\" NumberOfPolys=\"1\">\n"
+                   "      <Points>\n"
+                   "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" "
+                   "format=\"ascii\">0 0 {2:.9g} {3:.9g} 0 {2:.9g} {3:.9g} {4:.9g} {2:.9g} 0 {4:.9g} {2:.9g}"
+                   "</DataArray>\n"
+                   "      </Points>\n"
+                   "      <Polys>\n"
+                   "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3"
+                   "</DataArray>\n"
+                   "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
+                   "      </Polys>\n"
+                   "    </Piece>\n"
+                   "  </PolyData>\n"
+                   "</VTKFile>\n",
+                   process_time, level * 1e6, level, box.lx, box.ly);
     write_file_atomically(file, [&](std::ostream& os) {
         os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
     });

@@ -16,11 +16,17 @@
 namespace drydem {
 
 /// One particle frame as VTK XML PolyData: one vertex per particle (storage order), point data id,
-/// type (= species + 1), radius, diameter, velocity, omega, force; field data TimeValue (= process
-/// time, what ParaView's time readout shows), process_time_s and sim_time_s. ASCII. Written
-/// atomically; RunError on failure.
+/// type (= species + 1), radius, diameter, velocity, omega, force, and coordination (contacts per
+/// particle, substrate included) when given; field data TimeValue (= process time, what
+/// ParaView's time readout shows), process_time_s and sim_time_s. ASCII. Written atomically;
+/// RunError on failure.
 void write_vtp(const std::filesystem::path& file, const ParticleStore& particles, double sim_time,
-               double process_time);
+               double process_time, std::span<const std::int32_t> coordination = {});
+
+/// The liquid level as its own surface: one quad over the periodic base at height z_L, with field
+/// data TimeValue and liquid_level_um (shown beside the particles in ParaView).
+void write_level_vtp(const std::filesystem::path& file, const Box& box, double liquid_level,
+                     double process_time);
 
 /// ParaView time collection (.pvd) listing frames with their process time [s]. Rewritten
 /// (atomically) on every add, so the file is valid whenever a run stops.
@@ -34,6 +40,10 @@ public:
     /// For a resumed run: takes over the entries of an existing .pvd (none if there is no file),
     /// so frames from before the restart stay in the collection. Returns how many were read.
     std::size_t load_existing();
+    /// Keeps the first n entries (a resumed run drops frames written after its checkpoint).
+    void truncate(std::size_t n) {
+        if (n < entries_.size()) entries_.resize(n);
+    }
     [[nodiscard]] std::size_t size() const { return entries_.size(); }
 
 private:

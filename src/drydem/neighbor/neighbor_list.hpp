@@ -63,6 +63,27 @@ public:
     };
     [[nodiscard]] std::vector<Entry> history_entries(const ParticleStore& p) const;
 
+    /// Everything the next steps depend on (checkpoints): the list itself in its slot order, the
+    /// histories and the positions of the last build (which decide the next rebuild). The cell
+    /// grid and the carry-over arrays are rebuilt from scratch at every build, so they are not
+    /// state.
+    struct State {
+        std::uint64_t builds = 0;
+        std::vector<std::uint32_t> offset, partner;
+        std::vector<double> reach2;
+        std::vector<Vec3> history;
+        std::vector<Vec3> x_build;
+    };
+    [[nodiscard]] State state() const { return {builds_, offset_, partner_, reach2_, history_, x_build_}; }
+    void restore(State s) {
+        builds_ = s.builds;
+        offset_ = std::move(s.offset);
+        partner_ = std::move(s.partner);
+        reach2_ = std::move(s.reach2);
+        history_ = std::move(s.history);
+        x_build_ = std::move(s.x_build);
+    }
+
 private:
     struct Grid {
         int nx = 1, ny = 1, nz = 1;

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// The study's plan and statistics (paper Fig. 6: mean and standard deviation over seeds), and its
+// tolerance of failed runs.
+#include "drydem/core/error.hpp"
+#include "drydem/study/study.hpp"
+#include <gtest/gtest.h>
+#include "test_dirs.hpp"
+#include <nlohmann/json.hpp>
+#include <cmath>
+#include <fstream>
+
+using namespace drydem;
+
+TEST(Study, PlanIsLoadingsTimesSeeds) {
+    Config c;
+    c.seed = 7;
+    const auto cases = plan_study(c, {0.201, 0.252}, 3);
+    ASSERT_EQ(cases.size(), 6u);
+    EXPECT_DOUBLE_EQ(cases[0].areal_loading, 0.201);
+    EXPECT_EQ(cases[0].seed, 7u);
+    EXPECT_EQ(cases[2].seed, 9u);
+    EXPECT_DOUBLE_EQ(cases[3].areal_loading, 0.252);
+    EXPECT_EQ(cases[3].seed, 7u);
+    EXPECT_EQ(cases[4].name, "L25.20_s8");
+    // No loadings: the config's own.
+    const auto own = plan_study(c, {}, 1);
+    ASSERT_EQ(own.size(), 1u);
+    EXPECT_DOUBLE_EQ(own[0].areal_loading, c.areal_loading);
+    EXPECT_THROW(plan_study(c, {0.2}, 0), InputError);
+    EXPECT_THROW(plan_study(c, {-0.2}, 1), InputError);
+}
+
+TEST(Study, StatisticsAreMeanAndSampleStdOverCompletedRuns) {
+    auto row = [](double l, std::uint64_t seed, const char* status, double h, double rho, double eps) {
+        StudyRow r;
+        r.c = {l, seed, "x"};
+        r.status = status;
+        if (std::string(status) == "completed") {
+            r.thickness_um = h;
+            r.density_g_cm3 = rho;
+            r.porosity = eps;
+        }
+        return r;
+    };
+    const std::vector<StudyRow> rows = {row(0.201, 1, "completed", 83.0, 2.40, 0.44),
+                                        row(0.201, 2, "completed", 85.0, 2.38, 0.45),
+                                        row(0.201, 3, "completed", 84.0, 2.39, 0.46),
+                                        row(0.252, 1, "failed", 0, 0, 0),
+                                        row(0.252, 2, "completed", 105.0, 2.41, 0.43)};
+    const auto s = study_statistics(rows);
+    ASSERT_EQ(s.size(), 2u);
+    EXPECT_DOUBLE_EQ(s[0].areal_loading_mg_cm2, 20.1);
+    EXPECT_EQ(s[0].completed, 3);
+    EXPECT_EQ(s[0].failed, 0);
+    EXPECT_NEAR(s[0].thickness_mean_um, 84.0, 1e-12);
+    EXPECT_NEAR(s[0].thickness_std_um, 1.0, 1e-12); // sample s.d. of 83, 84, 85
+    EXPECT_NEAR(s[0].density_mean_g_cm3, 2.39, 1e-12);
+    EXPECT_NEAR(s[0].porosity_std, 0.01, 1e-12);
+    EXPECT_EQ(s[1].completed, 1);
+    EXPECT_EQ(s[1].failed, 1);
+    EXPECT_NEAR(s[1].thickness_mean_um, 105.0, 1e-12);
+    EXPECT_EQ(s[1].thickness_std_um, 0.0); // one run: no spread
+}
+
+TEST(Study, RowsComeFromSummariesAndMissingOnesAreFailures) {
+    const auto dir = testing_support::temp_dir();
+    std::ofstream(dir / "summary.json") << R"({"status": "completed", "final_thickness_um": 12.5,
+        "density_g_cm3": 2.0, "porosity": 0.5, "process_time_final_s": 20.0, "wall_time_s": 3.0})";
+    const StudyRow ok = read_study_row({0.02, 1, "a"}, dir, 0);
+    EXPECT_EQ(ok.status, "completed");
+    EXPECT_DOUBLE_EQ(*ok.thickness_um, 12.5);
+    EXPECT_DOUBLE_EQ(*ok.porosity, 0.5);
+    const StudyRow missing = read_study_row({0.02, 2, "b"}, dir / "nowhere", 2);
+    EXPECT_EQ(missing.status, "failed");
+    EXPECT_NE(missing.error.find("exit code 2"), std::string::npos) << missing.error;
+    std::ofstream(dir / "summary.json") << R"({"status": "failed", "error": "blow-up at particle 7",
+        "final_thickness_um": null})";
+    const StudyRow failed = read_study_row({0.02, 3, "c"}, dir, 1);
+    EXPECT_EQ(failed.status, "failed");
+    EXPECT_EQ(failed.error, "blow-up at particle 7");
+    EXPECT_FALSE(failed.thickness_um);
+
+    // The table keeps every case, failures included.
+    Config base;
+    base.measured_loadings = {0.02};
+    base.measured_thickness = {12e-6};
+    write_study_results(dir, base, {ok, missing, failed});
+    std::ifstream csv(dir / "study.csv");
+    std::string line;
+    int lines = 0;
+    while (std::getline(csv, line)) ++lines;
+    EXPECT_EQ(lines, 4);
+    const auto j = nlohmann::json::parse(std::ifstream(dir / "study.json"));
+    EXPECT_EQ(j["completed"], 1);
+    EXPECT_EQ(j["failed"], 2);
+    EXPECT_NEAR(j["measured"][0]["thickness_um"].get<double>(), 12.0, 1e-9);
+    EXPECT_NEAR(j["loadings"][0]["thickness_mean_um"].get<double>(), 12.5, 1e-12);
+}
