@@ -42,29 +42,49 @@ ax[1].set_xlabel('process time / s')
 ax[1].legend()
 fig.tight_layout()
 fig.savefig(os.path.join(run, 'plots', 'diagnostics.png'), dpi=120)
-print('plots written to', os.path.join(run, 'plots'))
 
-# Cross-section of the final structure: spheres cut by the plane y = ly/2 (true sizes), with the
-# final thickness and the liquid level at the end.
-parts = list(csv.DictReader(open(os.path.join(run, 'final.csv'))))
-ly = summary['box_um'][1]
-y0 = 0.5 * ly
-fig, ax = plt.subplots(figsize=(6.4, 4.0))
-for p in parts:
-    r = float(p['radius_m']) * 1e6
-    dy = float(p['y_m']) * 1e6 - y0
-    if abs(dy) < r:
-        rc = (r * r - dy * dy) ** 0.5  # radius of the cut circle
-        color = '#444444' if p['type'] == '6' else '#c0392b'
-        ax.add_patch(plt.Circle((float(p['x_m']) * 1e6, float(p['z_m']) * 1e6), rc, color=color, lw=0))
-if summary.get('final_thickness_um') is not None:
-    ax.axhline(summary['final_thickness_um'], color='k', ls='--', lw=0.8, label='final thickness')
-ax.set_xlim(0, summary['box_um'][0])
-ax.set_ylim(0, max(summary['wet_film_height_um'] * 0.75, (summary.get('final_thickness_um') or 0) * 1.1))
-ax.set_aspect('equal')
-ax.set_xlabel('x / um')
-ax.set_ylabel('z / um')
-ax.set_title(f'final structure, section y = {y0:.1f} um (red NCM, grey CB)')
-ax.legend(loc='upper right')
-fig.tight_layout()
-fig.savefig(os.path.join(run, 'plots', 'structure_section.png'), dpi=120)
+# Cross-sections of the wet (initial) and the dried (final) structure, the paper's Fig. 4 as a
+# section: spheres cut by the plane y = ly/2 at their true cut radius, same scale in both panels.
+def section(ax, csv_file, title, lines):
+    parts = list(csv.DictReader(open(csv_file)))
+    cb_type = max(p['type'] for p in parts) if parts else ''  # CB is the last species
+    ly = summary['box_um'][1]
+    y0 = 0.5 * ly
+    for p in parts:
+        r = float(p['radius_m']) * 1e6
+        dy = float(p['y_m']) * 1e6 - y0
+        if abs(dy) < r:
+            rc = (r * r - dy * dy) ** 0.5
+            color = '#555555' if p['type'] == cb_type else '#c0392b'
+            ax.add_patch(plt.Circle((float(p['x_m']) * 1e6, float(p['z_m']) * 1e6), rc, color=color, lw=0))
+    for z, style, label in lines:
+        ax.axhline(z, color=style[0], ls=style[1], lw=1.0)
+        title += f'\n{label}'
+    ax.set_xlim(0, summary['box_um'][0])
+    ax.set_aspect('equal')
+    ax.set_xlabel('x / µm')
+    ax.set_title(f'{title} (section y = {y0:.1f} µm)', fontsize=10)
+
+
+initial = os.path.join(run, 'initial.csv')
+final = os.path.join(run, 'final.csv')
+top = summary['wet_film_height_um'] * 1.05
+panels = []
+if os.path.exists(initial):
+    panels.append((initial, 'wet film (start)', [(summary['wet_film_height_um'], ('tab:blue', '-'), f"liquid level {summary['wet_film_height_um']:.1f} µm (blue)")]))
+if os.path.exists(final):
+    lines = []
+    if summary.get('final_thickness_um') is not None:
+        lines.append((summary['final_thickness_um'], ('k', '--'), f"final thickness {summary['final_thickness_um']:.1f} µm (dashed)"))
+    panels.append((final, 'dried film (end)', lines))
+if panels:
+    height = min(9.0, max(2.6, 4.2 * top / summary['box_um'][0] + 1.4))
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels) + 0.8, height), squeeze=False)
+    for ax, (f, title, lines) in zip(axes[0], panels):
+        section(ax, f, title, lines)
+        ax.set_ylim(0, top)
+    axes[0][0].set_ylabel('z / µm')
+    fig.suptitle('structure (red NCM, grey CB)')
+    fig.tight_layout()
+    fig.savefig(os.path.join(run, 'plots', 'structure_wet_dry.png'), dpi=120)
+print('plots written to', os.path.join(run, 'plots'))

@@ -182,6 +182,7 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                       "level H_wet = {:.4g} um of this config (film.areal_loading); the end "
                       "criterion may fire at once", top * 1e6, recipe.wet_film_height * 1e6);
     }
+    if (!resumed) write_particles_csv(opt.output_dir / "initial.csv", particles); // the wet film
     const ParticleStore& species_of = resumed ? resumed->engine.particles : particles;
     std::size_t n_ncm = 0, n_cb = 0;
     for (std::uint8_t s : species_of.species) (recipe.species[s].is_cb ? n_cb : n_ncm)++;
