@@ -105,7 +105,7 @@ const std::vector<Field>& schema() {
          0, inf, true},
         {"dryer.supply_air_solvent_mole_fraction", &Config::dryer_supply_air_solvent,
          D::dimensionless, 0, 0.5},
-        {"dryer.final_porosity", &Config::dryer_final_porosity, D::dimensionless, 0, 1, true},
+        {"dryer.final_porosity", &Config::dryer_final_porosity, D::dimensionless, 0, 0.95, true},
         {"dryer.vapour_pressure", &Config::dryer_vapour_pressure, D::dimensionless, -inf, inf,
          false, {"anchored", "landolt"}},
         {"dryer.ackermann", &Config::dryer_ackermann},
