@@ -97,7 +97,9 @@ int main(int argc, char** argv) {
         }
         if (*bench) return app::run_bench(bench_opt);
         if (*check) {
-            app::print_check(load(config_file, sets));
+            Config c = load(config_file, sets);
+            if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c); // rates as the run uses them
+            app::print_check(c);
             return 0;
         }
         if (*dryer) {
