@@ -39,11 +39,13 @@ ax[0].axhline(info['final_thickness_um'], color='0.4', lw=0.8, ls='-.',
 for z in info['zones']:
     if z['shrinkage_rate_um_s'] is not None:
         x0, x1 = z['position_m']
-        ax[0].text(0.5 * (x0 + x1), info['wet_film_height_um'],
+        ax[0].text(0.5 * (x0 + x1), info['wet_film_height_um'] + 0.03 * (info['wet_film_height_um'] - info['final_thickness_um']),
                    f"s{z['zone']} = {z['shrinkage_rate_um_s']:.3f} um/s", ha='center', va='bottom', fontsize=9)
 marks(ax[0])
 ax[0].set_ylabel('film thickness / um')
-ax[0].legend(loc='upper right', fontsize=9)
+span = info['wet_film_height_um'] - info['final_thickness_um']
+ax[0].set_ylim(info['final_thickness_um'] - 0.08 * span, info['wet_film_height_um'] + 0.15 * span)
+ax[0].legend(loc='center right', fontsize=9)
 
 ax[1].plot(x, col('film_temperature_C'), color='tab:red', label='film temperature')
 ax[1].plot(x, col('dryer_temperature_C'), color='k', drawstyle='steps-post', label='dryer air temperature')
