@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include "drydem/drying/drying_run.hpp"
 #include "drydem/io/config.hpp"
 #include <cstdint>
 #include <filesystem>
@@ -32,5 +33,19 @@ struct StudyOptions {
     bool quiet = false, plots = true;
 };
 int run_study(const Config& base, const StudyOptions& o);
+
+/// `drydem dryer`: the dryer model alone; writes dryer.json, dryer.csv and plots/dryer.png.
+struct DryerOptions {
+    std::filesystem::path output_dir;
+    bool plots = true;
+};
+int run_dryer(const Config& c, const DryerOptions& o);
+
+/// `drydem dryer --table2`: paper Table 2 against the dryer model, presets table2 and physical.
+void print_table2_comparison(const Config& c);
+
+/// `drydem run --couple-dryer`: the dryer <-> DEM iteration (dryer.md D-6); each DEM run in
+/// DIR/iter_N, the iterations in DIR/coupling.json. Returns 0 when converged, 1 otherwise.
+int run_coupled(const Config& c, const RunOptions& o);
 
 } // namespace drydem::app

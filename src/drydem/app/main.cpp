@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// `drydem` command line (interface.md): run, check, config, bench. Exit codes: 0 success,
+// `drydem` command line (interface.md): run, check, dryer, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
+#include "drydem/dryer/dryer_config.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/io/units.hpp"
 #include <CLI/CLI.hpp>
@@ -24,9 +25,10 @@ Config load(const std::string& file, const std::vector<std::string>& sets) {
                         : load_config_file(file, sets);
 }
 
-std::string default_output_dir(const Config& c) {
+std::string default_output_dir(const Config& c, std::string_view suffix = "") {
     const auto now = std::chrono::system_clock::now();
-    return fmt::format("out/{}-{:%Y%m%d-%H%M%S}", c.name, fmt::localtime(std::chrono::system_clock::to_time_t(now)));
+    return fmt::format("out/{}{}-{:%Y%m%d-%H%M%S}", c.name, suffix,
+                       fmt::localtime(std::chrono::system_clock::to_time_t(now)));
 }
 
 } // namespace
@@ -41,7 +43,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> sets;
     std::int64_t seed = -1;
     int threads = -1;
-    bool quiet = false, no_plots = false;
+    bool quiet = false, no_plots = false, couple_dryer = false, table2 = false;
 
     auto* run = cli.add_subcommand("run", "run the drying simulation (no CONFIG: the paper's 20.1 mg/cm2 case)");
     run->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
@@ -57,6 +59,17 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingDirectory);
     run->add_flag("--quiet", quiet, "only warnings and errors on the console");
     run->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+    run->add_flag("--couple-dryer", couple_dryer,
+                  "iterate dryer model <-> DEM until the final thickness settles (paper Sec. 8; "
+                  "each DEM run in DIR/iter_N, summary in DIR/coupling.json)");
+
+    auto* dryer = cli.add_subcommand("dryer", "the dryer model alone: film temperature, solvent "
+                                              "content, shrinkage rate per zone (docs/dryer.md)");
+    dryer->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
+    dryer->add_option("-o,--output", out_dir, "output folder (default out/<name>-dryer-<timestamp>)");
+    dryer->add_option("--set", sets, "override a key, e.g. --set dryer.preset=physical")->take_all();
+    dryer->add_flag("--no-plots", no_plots, "skip the matplotlib plot");
+    dryer->add_flag("--table2", table2, "print paper Table 2 against the model (both presets) instead");
 
     auto* check = cli.add_subcommand("check", "validate a configuration and print every derived quantity");
     check->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
@@ -108,7 +121,9 @@ int main(int argc, char** argv) {
         }
         if (*bench) return app::run_bench(bench_opt);
         if (*check) {
-            app::print_check(load(config_file, sets));
+            Config c = load(config_file, sets);
+            if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c); // rates as the run uses them
+            app::print_check(c);
             return 0;
         }
         if (*study) {
@@ -128,16 +143,27 @@ int main(int argc, char** argv) {
             }
             return app::run_study(c, study_opt);
         }
+        if (*dryer) {
+            const Config c = load(config_file, sets);
+            if (table2) {
+                app::print_table2_comparison(c);
+                return 0;
+            }
+            app::DryerOptions d;
+            d.output_dir = out_dir.empty() ? default_output_dir(c, "-dryer") : out_dir;
+            d.plots = !no_plots;
+            return app::run_dryer(c, d);
+        }
         if (!*run) {
             std::cout << cli.help();
             return 0;
         }
         if (!resume_dir.empty()) {
             if (!config_file.empty() || !sets.empty() || !particles.empty() || !out_dir.empty() ||
-                seed >= 0)
+                seed >= 0 || couple_dryer)
                 throw InputError("--resume DIR continues a run with the config stored in its "
-                                 "checkpoint; CONFIG, --set, --seed, --particles and -o are not "
-                                 "allowed with it (only --threads, --quiet, --no-plots)");
+                                 "checkpoint; CONFIG, --set, --seed, --particles, -o and "
+                                 "--couple-dryer are not allowed with it (only --threads, --quiet, --no-plots)");
         }
         Config c = resume_dir.empty() ? load(config_file, sets) : resume_config(resume_dir);
         if (!resume_dir.empty() && threads >= 0) c.threads = threads;
@@ -150,6 +176,9 @@ int main(int argc, char** argv) {
         if (!particles.empty()) o.particles_file = particles;
         o.quiet = quiet;
         o.plots = !no_plots;
+        if (couple_dryer) return app::run_coupled(c, o);
+        // dryer.schedule = "model": the liquid level follows the dryer model's rates (D-6 step 2).
+        if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c);
         const DryingResult r = run_drying(c, o);
         return r.completed ? 0 : 1;
     } catch (const InputError& e) {

@@ -489,6 +489,16 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     summary["particles"] = {{"ncm", n_ncm}, {"cb", n_cb}};
     summary["box_um"] = {c.box_x * 1e6, c.box_y * 1e6};
     summary["scaling"] = to_json(scaled);
+    // Which shrinkage rates drove the liquid level: the config's, or the dryer model's (docs/dryer.md).
+    {
+        std::vector<double> um;
+        for (double r : c.shrinkage_rates) um.push_back(r * 1e6);
+        summary["shrinkage_rates_um_s"] = um;
+        summary["shrinkage_rates_source"] =
+            c.dryer_schedule == "model"
+                ? fmt::format("dryer model (preset {}, final porosity {:.4g})", c.dryer_preset, c.dryer_final_porosity)
+                : std::string("dryer.shrinkage_rates");
+    }
     summary["time_step_s"] = c.time_step;
     summary["time_step_min_s"] = pr.dt_min;
     summary["steps"] = result.steps;

@@ -88,6 +88,32 @@ const std::vector<Field>& schema() {
         {"dryer.shrinkage_rates", &Config::shrinkage_rates, D::velocity, 0, 1e-3, true},
         {"dryer.line_speed", &Config::line_speed, D::velocity, 0, inf, true},
         {"dryer.zone_length", &Config::zone_length, D::length, 0, inf, true},
+        {"dryer.schedule", &Config::dryer_schedule, D::dimensionless, -inf, inf, false,
+         {"rates", "model"}},
+        {"dryer.preset", &Config::dryer_preset, D::dimensionless, -inf, inf, false,
+         {"table2", "physical"}},
+        {"dryer.zone_lengths", &Config::dryer_zone_lengths, D::length, 0, 1e3, true},
+        // 480 K: upper end of the vapour-pressure correlation (D-5.1); the film never exceeds the air
+        {"dryer.air_temperatures", &Config::dryer_air_temperatures, D::temperature, 273.15, 480},
+        {"dryer.heat_transfer_coefficients", &Config::dryer_heat_transfer_coefficients,
+         D::heat_transfer_coefficient, 0, 1e4, true},
+        {"dryer.bottom_heat_transfer_factor", &Config::dryer_bottom_factor, D::dimensionless, 0, 10},
+        {"dryer.analogy_exponent", &Config::dryer_analogy_exponent, D::dimensionless, 0, 1},
+        {"dryer.initial_film_temperature", &Config::dryer_initial_temperature, D::temperature,
+         273.15, 480},
+        {"dryer.substrate_thickness", &Config::dryer_substrate_thickness, D::length, 0, 1e-3},
+        {"dryer.substrate_density", &Config::dryer_substrate_density, D::density, 0, inf, true},
+        {"dryer.substrate_heat_capacity", &Config::dryer_substrate_heat_capacity, D::specific_heat,
+         0, inf, true},
+        {"dryer.supply_air_solvent_mole_fraction", &Config::dryer_supply_air_solvent,
+         D::dimensionless, 0, 0.5},
+        {"dryer.final_porosity", &Config::dryer_final_porosity, D::dimensionless, 0, 0.95, true},
+        {"dryer.vapour_pressure", &Config::dryer_vapour_pressure, D::dimensionless, -inf, inf,
+         false, {"anchored", "landolt"}},
+        {"dryer.ackermann", &Config::dryer_ackermann},
+        {"dryer.time_step", &Config::dryer_time_step, D::time, 0, 0.05, true},
+        {"dryer.coupling_tolerance", &Config::coupling_tolerance, D::length, 0, 1e-3, true},
+        {"dryer.coupling_max_iterations", &Config::coupling_max_iterations, D::dimensionless, 1, 100},
         {"drying.final_gap", &Config::final_gap, D::length, 0, 1e-3},
         {"drying.relaxation", &Config::relaxation, D::time, 0, inf},
         {"drying.fluid_forces_above_level", &Config::fluid_forces_above_level, D::dimensionless,
@@ -247,6 +273,31 @@ void apply_override(toml::table& root, const std::string& spec) {
     }
 }
 
+/// Cross-key rules of the [dryer] section (per-key ranges are in the schema).
+void check_dryer(const Config& c) {
+    const std::size_t n = c.dryer_zone_lengths.size();
+    if (c.dryer_air_temperatures.size() != n || c.dryer_heat_transfer_coefficients.size() != n)
+        throw InputError(fmt::format(
+            "config keys 'dryer.zone_lengths' ({} zones), 'dryer.air_temperatures' ({} values) and "
+            "'dryer.heat_transfer_coefficients' ({} values) must have one entry per dryer zone",
+            n, c.dryer_air_temperatures.size(), c.dryer_heat_transfer_coefficients.size()));
+    for (std::size_t k = 0; k < n; ++k)
+        if (c.dryer_air_temperatures[k] < c.dryer_initial_temperature)
+            throw InputError(fmt::format(
+                "config key 'dryer.air_temperatures': {:g} K ({:g} degC) in zone {} is below the film's "
+                "initial temperature dryer.initial_film_temperature = {:g} K; allowed >= {:g} K",
+                c.dryer_air_temperatures[k], c.dryer_air_temperatures[k] - 273.15, k + 1,
+                c.dryer_initial_temperature, c.dryer_initial_temperature));
+    if (c.dryer_schedule == "model")
+        for (std::size_t k = 0; k < n; ++k)
+            if (std::abs(c.dryer_zone_lengths[k] - c.zone_length) > 1e-9 * c.zone_length)
+                throw InputError(fmt::format(
+                    "config key 'dryer.zone_lengths': zone {} is {:g} m but the DEM liquid-level "
+                    "schedule uses equal zones of dryer.zone_length = {:g} m; with dryer.schedule = "
+                    "\"model\" every entry must equal dryer.zone_length", k + 1,
+                    c.dryer_zone_lengths[k], c.zone_length));
+}
+
 } // namespace
 
 Config load_config(std::string_view toml_text, std::string_view source_name,
@@ -289,6 +340,7 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
             throw InputError(fmt::format("config key '{}': {} values for {} study.measured_loadings; "
                                          "allowed: one per measured loading{}",
                                          key, values->size(), n_measured, optional ? " or none" : ""));
+    check_dryer(c);
     return c;
 }
 

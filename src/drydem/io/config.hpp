@@ -70,7 +70,27 @@ struct Config {
     // [dryer] (M-8.1, paper Table 2)
     std::vector<double> shrinkage_rates = {0.670e-6, 1.193e-6}; ///< physical [m/s] per zone
     double line_speed = 2.0 / 60.0;      ///< [m/s]
-    double zone_length = 2.0;            ///< [m]
+    double zone_length = 2.0;            ///< [m] zone length of the DEM liquid-level schedule
+    // [dryer] the dryer model (dryer.md D-1 ... D-6; paper Sec. 6, Table A1)
+    std::string dryer_schedule = "rates"; ///< DEM level from "rates" (shrinkage_rates) or "model"
+    std::string dryer_preset = "table2";  ///< "table2" (n = 0.42, calibrated) | "physical" (D-3)
+    std::vector<double> dryer_zone_lengths = {2.0, 2.0, 2.0};          ///< ℓ_k [m]
+    std::vector<double> dryer_air_temperatures = {80.0 + 273.15, 100.0 + 273.15,
+                                                  120.0 + 273.15};     ///< T_g,k [K]
+    std::vector<double> dryer_heat_transfer_coefficients = {40.0, 40.0, 55.0}; ///< α_top,k [W m^-2 K^-1]
+    double dryer_bottom_factor = 1.0;     ///< α_bot/α_top (A1)
+    double dryer_analogy_exponent = 0.0;  ///< n of the heat/mass analogy; 0 = the preset's (D-2.4)
+    double dryer_initial_temperature = 25.0 + 273.15; ///< film at the dryer inlet [K] (A4)
+    double dryer_substrate_thickness = 20e-6;   ///< Al foil [m] (A3)
+    double dryer_substrate_density = 2700.0;    ///< [kg/m^3]
+    double dryer_substrate_heat_capacity = 900.0; ///< [J kg^-1 K^-1]
+    double dryer_supply_air_solvent = 0.0;      ///< NMP mole fraction in the supply air (A2)
+    double dryer_final_porosity = 0.44;         ///< ε_f guess for the end of shrinkage (D-6)
+    std::string dryer_vapour_pressure = "anchored"; ///< "anchored" | "landolt" (D-5.1)
+    bool dryer_ackermann = false;               ///< Ackermann correction (D-2.2)
+    double dryer_time_step = 0.02;              ///< RK4 step of the dryer model [s] (D-2.7)
+    double coupling_tolerance = 0.5e-6;         ///< stop when |Δh_f| < this [m] (D-6)
+    int coupling_max_iterations = 6;            ///< dryer <-> DEM iterations at most (D-6)
 
     // [drying]
     double final_gap = 0.0;              ///< end criterion top - z_L [m]; 0 = largest diameter (M-8.2)

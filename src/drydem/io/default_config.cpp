@@ -73,9 +73,29 @@ hamaker_factor = 1e7
 gravity = "9.81 m/s^2"           # physical; simulated g = g k / b
 
 [dryer]                          # paper Table 2, 20.1 mg/cm2
-shrinkage_rates = ["0.670 um/s", "1.193 um/s"]
+shrinkage_rates = ["0.670 um/s", "1.193 um/s"]   # film shrinkage per zone (the DEM's liquid level)
 line_speed = "2 m/min"
-zone_length = "2 m"
+zone_length = "2 m"              # zone length of the DEM liquid-level schedule
+schedule = "rates"               # DEM level from shrinkage_rates ("rates", reproduces the paper's DEM)
+                                 # or from the dryer model below ("model"; docs/dryer.md)
+# The dryer model (docs/dryer.md, dryer.md D-1 ... D-6; paper Sec. 6 and Table A1):
+preset = "table2"                # "table2": n = 0.42, calibrated to Table 2; "physical": n = 1/3
+zone_lengths = ["2 m", "2 m", "2 m"]
+air_temperatures = ["80 degC", "100 degC", "120 degC"]
+heat_transfer_coefficients = ["40 W/(m^2*K)", "40 W/(m^2*K)", "55 W/(m^2*K)"]  # top, per zone
+bottom_heat_transfer_factor = 1.0  # bottom = factor * top coefficient (assumption A1)
+analogy_exponent = 0             # n of beta = alpha/(rho c_p) Le^(n-1); 0 = the preset's value
+initial_film_temperature = "25 degC"  # wet film at the dryer inlet (A4)
+substrate_thickness = "20 um"    # aluminium foil (A3)
+substrate_density = "2.7 g/cm^3"
+substrate_heat_capacity = "900 J/(kg*K)"
+supply_air_solvent_mole_fraction = 0.0  # NMP in the supply air (A2)
+final_porosity = 0.44            # end of shrinkage; first guess of the dryer <-> DEM coupling
+vapour_pressure = "anchored"     # NMP vapour pressure: "anchored" (Table A1) or "landolt" (+13 %)
+ackermann = false                # Ackermann correction of the top heat flux
+time_step = "0.02 s"             # RK4 step of the dryer model (<= 0.05 s)
+coupling_tolerance = "0.5 um"    # coupling stops when the final thickness changes less than this
+coupling_max_iterations = 6
 
 [drying]
 final_gap = 0                    # end criterion top - level; 0 = largest particle diameter (M-8.2)
