@@ -24,71 +24,41 @@ void BinaryReader::truncated() const {
     throw InputError(fmt::format("{}: the checkpoint data end early (damaged file?)", source_));
 }
 
+namespace {
+/// Every field of the engine state, in file order: one list for writing and reading, so the two
+/// cannot drift apart.
+template <class State, class F> // State: EngineState or const EngineState
+void each_field(State& s, F&& field) {
+    auto& p = s.particles;
+    field(p.id), field(p.species), field(p.radius), field(p.density), field(p.mass);
+    field(p.inv_mass), field(p.inv_inertia), field(p.position), field(p.velocity), field(p.omega);
+    field(p.force), field(p.torque), field(p.wall_history);
+    auto& nl = s.neighbors;
+    field(nl.builds), field(nl.offset), field(nl.partner), field(nl.reach2), field(nl.history);
+    field(nl.x_build);
+    field(s.step), field(s.time), field(s.liquid_level), field(s.dt);
+    field(s.stats.contacts), field(s.stats.wall_contacts), field(s.stats.max_overlap_rel);
+    field(s.stats.layer_top), field(s.force_rebuild), field(s.rebuilds_since_sort);
+}
+template <class T> struct is_vector : std::false_type {};
+template <class T> struct is_vector<std::vector<T>> : std::true_type {};
+} // namespace
+
 void write_engine_state(BinaryWriter& w, const EngineState& s) {
-    const ParticleStore& p = s.particles;
-    w.vec(p.id);
-    w.vec(p.species);
-    w.vec(p.radius);
-    w.vec(p.density);
-    w.vec(p.mass);
-    w.vec(p.inv_mass);
-    w.vec(p.inv_inertia);
-    w.vec(p.position);
-    w.vec(p.velocity);
-    w.vec(p.omega);
-    w.vec(p.force);
-    w.vec(p.torque);
-    w.vec(p.wall_history);
-    w.pod(s.neighbors.builds);
-    w.vec(s.neighbors.offset);
-    w.vec(s.neighbors.partner);
-    w.vec(s.neighbors.reach2);
-    w.vec(s.neighbors.history);
-    w.vec(s.neighbors.x_build);
-    w.pod(s.step);
-    w.pod(s.time);
-    w.pod(s.liquid_level);
-    w.pod(s.dt);
-    w.pod(std::uint64_t(s.stats.contacts));
-    w.pod(std::uint64_t(s.stats.wall_contacts));
-    w.pod(s.stats.max_overlap_rel);
-    w.pod(s.stats.layer_top);
-    w.pod(std::uint8_t(s.force_rebuild));
-    w.pod(s.rebuilds_since_sort);
+    each_field(s, [&](const auto& v) {
+        if constexpr (is_vector<std::remove_cvref_t<decltype(v)>>::value) w.vec(v);
+        else w.pod(v);
+    });
 }
 
 EngineState read_engine_state(BinaryReader& r) {
     EngineState s;
-    ParticleStore& p = s.particles;
-    p.id = r.vec<std::uint32_t>();
-    p.species = r.vec<std::uint8_t>();
-    p.radius = r.vec<double>();
-    p.density = r.vec<double>();
-    p.mass = r.vec<double>();
-    p.inv_mass = r.vec<double>();
-    p.inv_inertia = r.vec<double>();
-    p.position = r.vec<Vec3>();
-    p.velocity = r.vec<Vec3>();
-    p.omega = r.vec<Vec3>();
-    p.force = r.vec<Vec3>();
-    p.torque = r.vec<Vec3>();
-    p.wall_history = r.vec<Vec3>();
-    s.neighbors.builds = r.pod<std::uint64_t>();
-    s.neighbors.offset = r.vec<std::uint32_t>();
-    s.neighbors.partner = r.vec<std::uint32_t>();
-    s.neighbors.reach2 = r.vec<double>();
-    s.neighbors.history = r.vec<Vec3>();
-    s.neighbors.x_build = r.vec<Vec3>();
-    s.step = r.pod<std::int64_t>();
-    s.time = r.pod<double>();
-    s.liquid_level = r.pod<double>();
-    s.dt = r.pod<double>();
-    s.stats.contacts = std::size_t(r.pod<std::uint64_t>());
-    s.stats.wall_contacts = std::size_t(r.pod<std::uint64_t>());
-    s.stats.max_overlap_rel = r.pod<double>();
-    s.stats.layer_top = r.pod<double>();
-    s.force_rebuild = r.pod<std::uint8_t>() != 0;
-    s.rebuilds_since_sort = r.pod<std::uint64_t>();
+    each_field(s, [&](auto& v) {
+        using T = std::remove_cvref_t<decltype(v)>;
+        if constexpr (is_vector<T>::value) v = r.vec<typename T::value_type>();
+        else v = r.pod<T>();
+    });
+    const ParticleStore& p = s.particles;
     // Consistency: every per-particle array has one entry per particle, the list fits them.
     const std::size_t n = p.id.size();
     for (std::size_t m : {p.species.size(), p.radius.size(), p.density.size(), p.mass.size(),
