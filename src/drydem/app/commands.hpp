@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include "drydem/analysis/analyze.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/io/config.hpp"
 #include <cstdint>
@@ -47,5 +48,18 @@ void print_table2_comparison(const Config& c);
 /// `drydem run --couple-dryer`: the dryer <-> DEM iteration (dryer.md D-6); each DEM run in
 /// DIR/iter_N, the iterations in DIR/coupling.json. Returns 0 when converged, 1 otherwise.
 int run_coupled(const Config& c, const RunOptions& o);
+
+/// `drydem analyze SNAPSHOT`: structure analysis into analysis.json, profiles.csv, psd_*.csv, plots,
+/// and on request the voxel image (structure.raw/.json/.mhd, structure.tif).
+struct AnalyzeOptions {
+    std::filesystem::path snapshot, output_dir;
+    analysis::AnalysisOptions analysis;
+    int cb_type = 0;             ///< 0: the config's convention (types 1..n NCM, n + 1 CB)
+    bool export_voxels = false, tiff = false, plots = true, quiet = false;
+    int threads = 0;
+};
+int run_analyze(const Config& c, const AnalyzeOptions& o);
+/// Plots of an analysis folder (scripts/plot_analysis.py).
+void plot_analysis(const std::filesystem::path& dir);
 
 } // namespace drydem::app

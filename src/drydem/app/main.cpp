@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `drydem` command line (interface.md): run, check, dryer, config, bench. Exit codes: 0 success,
+// `drydem` command line (interface.md): run, check, dryer, analyze, study, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
@@ -99,6 +99,35 @@ int main(int argc, char** argv) {
     study->add_flag("--quiet", study_opt.quiet, "only the final table");
     study->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
 
+    app::AnalyzeOptions an;
+    std::string an_voxel = "0.1 um", an_dz = "0.5 um", an_gap = "0 um", an_config;
+    bool an_no_voxels = false;
+    auto* analyze = cli.add_subcommand("analyze", "structure analysis of a particle snapshot (ours, the peers' CSV, "
+                                                  "LAMMPS/LIGGGHTS data or dump): thickness, density, profiles, "
+                                                  "coordination, pore sizes, voxel image");
+    analyze->add_option("snapshot", an.snapshot, "particle file (final.csv, CSV, LAMMPS data or dump)")
+        ->required()->check(CLI::ExistingFile);
+    analyze->add_option("-o,--output", out_dir, "output folder (default: analysis/ beside the snapshot)");
+    analyze->add_option("--config", an_config,
+                        "config with the formulation and box (default: config.toml beside the snapshot, "
+                        "else the embedded default)")->check(CLI::ExistingFile);
+    analyze->add_option("--set", sets, "override a config key")->take_all();
+    analyze->add_option("--voxel", an_voxel, "voxel edge, e.g. 0.1um (a bare number is um; 0 = no voxel analysis)");
+    analyze->add_option("--dz", an_dz, "slab width of the height profiles (bare number: um)");
+    analyze->add_option("--contact-gap", an_gap, "surface gap still counted as contact for coordination (bare: um)");
+    analyze->add_option("--pore-top", an.analysis.pore_top,
+                        "top of the pore statistics: half_solid (robust thickness) or highest (highest top)")
+        ->check(CLI::IsMember({"half_solid", "highest"}));
+    analyze->add_option("--cb-type", an.cb_type, "the file's particle type of the CB spheres (default: n + 1 for n "
+                                                 "NCM classes in the config); every other type is NCM")
+        ->check(CLI::PositiveNumber);
+    analyze->add_flag("--export", an.export_voxels, "write the voxel image: structure.raw + .json + .mhd");
+    analyze->add_flag("--tiff", an.tiff, "also write structure.tif (multi-page, one page per z layer)");
+    analyze->add_flag("--no-voxels", an_no_voxels, "only the particle-based numbers (no pore sizes)");
+    analyze->add_option("--threads", an.threads, "OpenMP threads (default all cores)")->check(CLI::PositiveNumber);
+    analyze->add_flag("--quiet", an.quiet, "only the result lines");
+    analyze->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+
     app::BenchOptions bench_opt;
     auto* bench = cli.add_subcommand("bench", "the peers' granular benchmark (../shared/peers) in DryDEM");
     bench->add_option("data", bench_opt.data, "settled bed (LAMMPS data or CSV)")->required()->check(CLI::ExistingFile);
@@ -120,6 +149,27 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (*bench) return app::run_bench(bench_opt);
+        if (*analyze) {
+            // Bare numbers are micrometres, the unit of the structure.
+            auto length = [](std::string v, const char* key) {
+                if (v.find_first_not_of("0123456789.eE+- ") == std::string::npos) v += " um";
+                return parse_quantity(v, Dimension::length, key);
+            };
+            an.analysis.voxel = an_no_voxels ? 0.0 : length(an_voxel, "--voxel");
+            an.analysis.profile_dz = length(an_dz, "--dz");
+            an.analysis.contact_gap = length(an_gap, "--contact-gap");
+            if (an.analysis.voxel < 0.0) throw InputError(fmt::format("--voxel {}: must be positive (0 = none)", an_voxel));
+            if (!(an.analysis.profile_dz > 0.0)) throw InputError(fmt::format("--dz {}: must be positive", an_dz));
+            if (an.analysis.contact_gap < 0.0) throw InputError(fmt::format("--contact-gap {}: must be >= 0", an_gap));
+            const std::filesystem::path beside = an.snapshot.parent_path() / "config.toml";
+            if (an_config.empty() && std::filesystem::exists(beside)) an_config = beside.string();
+            const Config c = load(an_config, sets);
+            an.output_dir = out_dir.empty() ? an.snapshot.parent_path() / "analysis" : std::filesystem::path(out_dir);
+            an.plots = !no_plots;
+            if (!an.quiet)
+                fmt::print("config: {}\n", an_config.empty() ? std::string("<embedded default>") : an_config);
+            return app::run_analyze(c, an);
+        }
         if (*check) {
             Config c = load(config_file, sets);
             if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c); // rates as the run uses them

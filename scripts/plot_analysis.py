@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""Plots of a drydem analysis folder (Debian's python3-matplotlib):
+profiles.png  volume fractions of NCM, CB (envelope and carbon + binder) and pores over the height;
+pore_size.png the pore size distributions: chord lengths (as GeoDict PoroDict, the paper's Fig. 7),
+              local thickness (continuous PSD) and the simulated mercury intrusion (dV/dlog d, as
+              porosimetry reports it).
+usage: /usr/bin/python3 scripts/plot_analysis.py ANALYSIS_DIR"""
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.pyplot as plt  # noqa: E402
+
+d = sys.argv[1]
+a = json.load(open(os.path.join(d, 'analysis.json')))
+os.makedirs(os.path.join(d, 'plots'), exist_ok=True)
+
+
+def table(name):
+    path = os.path.join(d, name)
+    if not os.path.exists(path):
+        return None
+    rows = list(csv.DictReader(open(path)))
+    return {k: [float(r[k]) for r in rows] for k in rows[0]} if rows else None
+
+
+p = table('profiles.csv')
+fig, ax = plt.subplots(figsize=(5.6, 5.2))
+ax.plot(p['ncm'], p['z_um'], color='#c0392b', label='NCM')
+ax.plot(p['cb_envelope'], p['z_um'], color='#555555', label='CB agglomerates (envelope)')
+ax.plot(p['cb_carbon_binder'], p['z_um'], color='#555555', ls=':', label='carbon + binder')
+ax.plot(p['pore'], p['z_um'], color='tab:blue', label='pores between spheres')
+ax.plot(p['pore_total'], p['z_um'], color='tab:blue', ls='--', label='pores incl. inside CB')
+ax.axhline(a['thickness_um'], color='k', ls='--', lw=1)
+ax.axhline(a['thickness_half_solid_um'], color='k', ls=':', lw=1)
+ax.text(0.99, a['thickness_um'], f"highest top {a['thickness_um']:.1f} µm", ha='right', va='bottom', fontsize=8)
+ax.text(0.99, a['thickness_half_solid_um'], f"half-solid top {a['thickness_half_solid_um']:.1f} µm",
+        ha='right', va='top', fontsize=8)
+ax.set_xlim(0, 1)
+ax.set_ylim(0, a['thickness_um'] * 1.04)
+ax.set_xlabel('volume fraction / -')
+ax.set_ylabel('height above substrate z / µm')
+ax.set_title(f"composition over the height (slabs of {a['profile_dz_um']:.2g} µm)\n"
+             f"{a['areal_loading_mg_cm2']:.2f} mg/cm², {a['density_g_cm3']:.3f} g/cm³, porosity {a['porosity']:.3f}",
+             fontsize=10)
+ax.legend(fontsize=8, loc='lower left')
+fig.tight_layout()
+fig.savefig(os.path.join(d, 'plots', 'profiles.png'), dpi=120)
+
+ch = table('psd_chord.csv')
+lt = table('psd_local_thickness.csv')
+if ch and lt:
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.4))
+    for axis, color in (('x', 'tab:blue'), ('y', 'tab:orange'), ('z', 'tab:green')):
+        ax[0].plot(ch['chord_length_um'], ch[f'length_fraction_{axis}'], color=color,
+                   label=f"along {axis} (mean {a['pore_chord_mean_um'][axis]:.2f} µm)")
+    ax[0].set_xscale('log')
+    ax[0].set_xlabel('pore chord length / µm')
+    ax[0].set_ylabel('pore length fraction per chord length / -')
+    ax[0].set_title('chord length distribution (as GeoDict PoroDict)', fontsize=10)
+    ax[0].legend(fontsize=8)
+    # dV/dlog d per bin: volume fraction / (log10 d_hi - log10 d_lo); first bin starts at 0.
+    mid, lt_dens, hg_dens = [], [], []
+    for lo, hi, v, w in zip(lt['diameter_lo_um'], lt['diameter_hi_um'], lt['volume_fraction'],
+                            lt['mercury_volume_fraction']):
+        if lo <= 0:
+            continue
+        width = math.log10(hi / lo)
+        mid.append(math.sqrt(lo * hi))
+        lt_dens.append(v / width)
+        hg_dens.append(w / width)
+    ax[1].plot(mid, lt_dens, color='k', label=f"local thickness (peak {a['psd_peak_um']:.2f} µm)")
+    ax[1].plot(mid, hg_dens, color='tab:purple', ls='--',
+               label=f"simulated mercury intrusion (median {a['mercury_median_um']:.2f} µm)")
+    ax[1].set_xscale('log')
+    ax[1].set_xlabel('pore diameter / µm')
+    ax[1].set_ylabel('dV/dlog d / (pore volume fraction)')
+    ax[1].set_title(f"pore size distribution (voxel {a['voxel_size_um']:.3g} µm, below {a['pore_top_um']:.1f} µm)",
+                    fontsize=10)
+    ax[1].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, 'plots', 'pore_size.png'), dpi=120)
+print('plots written to', os.path.join(d, 'plots'))

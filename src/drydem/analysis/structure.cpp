@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/analysis/structure.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <cmath>
+
+namespace drydem::analysis {
+
+double Formulation::solids_density() const {
+    // Eq. 4: density of the dry solids from the mass fractions.
+    return 1.0 / (ncm_mass_fraction / ncm_density + pvdf_mass_fraction / pvdf_density +
+                  cb_mass_fraction / cb_density);
+}
+
+void Structure::add(const Vec3& x, double r, Phase ph, double rho) {
+    position.push_back(x);
+    radius.push_back(r);
+    phase.push_back(ph);
+    density.push_back(rho);
+}
+
+Formulation formulation_of(const Config& c) {
+    Formulation f;
+    f.ncm_density = c.ncm_density;
+    f.cb_density = c.cb_density;
+    f.cb_porosity = c.cb_porosity;
+    f.pvdf_density = c.pvdf_density;
+    f.ncm_mass_fraction = c.ncm_mass_fraction;
+    f.cb_mass_fraction = c.cb_mass_fraction;
+    f.pvdf_mass_fraction = c.pvdf_mass_fraction;
+    return f;
+}
+
+Structure structure_from_file(const ParticleFile& file, const Config& c, const PhaseRule& rule) {
+    Structure s;
+    s.formulation = formulation_of(c);
+    s.box.lx = file.lx.value_or(c.box_x);
+    s.box.ly = file.ly.value_or(c.box_y);
+    const int n_ncm = int(c.ncm_diameters.size());
+    const int cb_type = rule.cb_type.value_or(n_ncm + 1);
+    for (const ParticleRecord& r : file.particles) {
+        if (!rule.cb_type && (r.type < 1 || r.type > n_ncm + 1))
+            throw InputError(fmt::format(
+                "particle {} has type {}; the config defines types 1..{} (NCM classes, then CB = {}); "
+                "name the CB type with --cb-type",
+                r.id, r.type, n_ncm + 1, n_ncm + 1));
+        if (!(r.radius > 0.0) || !std::isfinite(r.position.z))
+            throw InputError(fmt::format("particle {}: radius {} m / z {} m is not a valid sphere", r.id,
+                                         r.radius, r.position.z));
+        Vec3 x = r.position;
+        x.x -= file.xlo.value_or(0.0);
+        x.y -= file.ylo.value_or(0.0);
+        s.box.wrap(x);
+        const Phase ph = r.type == cb_type ? Phase::cb : Phase::ncm;
+        s.add(x, r.radius, ph, std::isnan(r.density) ? c.ncm_density : r.density);
+    }
+    if (s.size() == 0) throw InputError("the particle file has no particles");
+    return s;
+}
+
+} // namespace drydem::analysis

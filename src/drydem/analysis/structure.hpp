@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// The dried structure as the analysis sees it: spheres with a phase (NCM or CB agglomerate), a
+// periodic x-y base and the substrate at z = 0, plus the formulation constants the masses need.
+// Built from any particle file (ours, the peers' CSV, LAMMPS/LIGGGHTS data or dump) and a config.
+#pragma once
+#include "drydem/core/box.hpp"
+#include "drydem/core/vec3.hpp"
+#include "drydem/io/config.hpp"
+#include "drydem/io/particle_io.hpp"
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace drydem::analysis {
+
+enum class Phase : std::uint8_t { ncm = 1, cb = 2 }; ///< = voxel labels (0 = pore)
+
+/// Formulation constants of the analysis (SI): where the dry mass sits.
+struct Formulation {
+    double ncm_density = 4740.0;       ///< [kg/m^3], used where the file has no density
+    double cb_density = 1660.0;        ///< carbon [kg/m^3]
+    double cb_porosity = 0.75;         ///< ε_CB: carbon fraction of an agglomerate is 1 - ε_CB
+    double pvdf_density = 1780.0;      ///< [kg/m^3]
+    double ncm_mass_fraction = 0.94, cb_mass_fraction = 0.03, pvdf_mass_fraction = 0.03;
+    [[nodiscard]] double solids_density() const; ///< ρ_s, Eq. 4
+};
+
+struct Structure {
+    Box box;                          ///< periodic x-y lengths
+    std::vector<Vec3> position;       ///< [m], x and y wrapped into [0, l)
+    std::vector<double> radius;       ///< [m]
+    std::vector<double> density;      ///< [kg/m^3] of NCM spheres (file or formulation); unused for CB
+    std::vector<Phase> phase;
+    Formulation formulation;
+
+    [[nodiscard]] std::size_t size() const { return position.size(); }
+    void add(const Vec3& x, double r, Phase ph, double rho = 0.0);
+};
+
+/// Which file types are CB (every other type is NCM). Default: our and the peers' convention, types
+/// 1..n the NCM classes of the config and n + 1 the CB spheres.
+struct PhaseRule {
+    std::optional<int> cb_type;
+};
+
+/// The structure of a particle file. The periodic box is the file's where it has one, else the
+/// config's (film.box_x, film.box_y); formulation constants from the config. Particles are wrapped
+/// into the box. InputError for a type the rule does not know or a particle outside the base.
+[[nodiscard]] Structure structure_from_file(const ParticleFile& file, const Config& c,
+                                            const PhaseRule& rule = {});
+
+[[nodiscard]] Formulation formulation_of(const Config& c);
+
+} // namespace drydem::analysis

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// `drydem analyze SNAPSHOT`: the structure analysis of a particle file (ours, the peers' CSV, a
+// LAMMPS/LIGGGHTS data or dump file) into analysis.json, profiles.csv, psd_*.csv, plots and, on
+// request, the voxel image.
+#include "drydem/app/commands.hpp"
+#include "drydem/analysis/analyze.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/io/analysis_writer.hpp"
+#include "drydem/io/particle_io.hpp"
+#include "drydem/io/voxel_export.hpp"
+#include <fmt/format.h>
+#include <omp.h>
+#include <sys/resource.h>
+#include <chrono>
+#include <cstdlib>
+
+namespace drydem::app {
+
+namespace fs = std::filesystem;
+
+void plot_analysis(const fs::path& dir) {
+    const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "plot_analysis.py";
+    if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) {
+        fmt::print(stderr, "warning: /usr/bin/python3 or {} missing; no plots\n", script.string());
+        return;
+    }
+    const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), dir.string());
+    if (std::system(cmd.c_str()) != 0) fmt::print(stderr, "warning: plotting failed\n");
+}
+
+int run_analyze(const Config& c, const AnalyzeOptions& o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (o.threads > 0) omp_set_num_threads(o.threads);
+    const ParticleFile file = read_particles(o.snapshot);
+    analysis::PhaseRule rule;
+    if (o.cb_type > 0) rule.cb_type = o.cb_type;
+    const analysis::Structure s = analysis::structure_from_file(file, c, rule);
+    analysis::AnalysisOptions a = o.analysis;
+    a.keep_grid = o.export_voxels || o.tiff;
+    if (!o.quiet) a.log = [](const std::string& m) { fmt::print("  {}\n", m); };
+    if (a.voxel > 0.0) {
+        const double top = analysis::highest_top(s);
+        const double voxels = double(analysis::voxel_count(s, a.voxel, top));
+        if (!o.quiet)
+            fmt::print("{}: {} particles ({}), box {:.4g} x {:.4g} um; voxel image {:.3g} voxels, about {:.2g} GB\n",
+                       o.snapshot.string(), s.size(), file.format, s.box.lx * 1e6, s.box.ly * 1e6, voxels,
+                       voxels * 7.5e-9);
+    }
+    const analysis::AnalysisResult r = analysis::analyze_structure(s, a);
+    write_analysis(o.output_dir, r, a, o.snapshot.string());
+    if (r.grid) {
+        const VoxelExport e = write_voxel_image(o.output_dir, *r.grid, o.snapshot.string(), o.tiff);
+        if (!o.quiet) fmt::print("  voxel image: {}, {}{}\n", e.raw.string(), e.mhd.string(),
+                                 e.tiff.empty() ? "" : ", " + e.tiff.string());
+    }
+    if (o.plots) plot_analysis(o.output_dir);
+    rusage use{};
+    getrusage(RUSAGE_SELF, &use);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const analysis::Bulk& b = r.bulk;
+    fmt::print("thickness {:.3f} um (highest top; half-solid {:.3f} um), density {:.4f} g/cm3, porosity {:.4f}\n",
+               b.thickness * 1e6, b.thickness_half_solid * 1e6, b.density * 1e-3, b.porosity);
+    fmt::print("coordination: NCM-NCM {:.3f}, NCM-CB {:.3f} per NCM, CB-CB {:.3f} per CB (gap {:.3g} um)\n",
+               r.coordination.ncm_with_ncm(), r.coordination.ncm_with_cb(), r.coordination.cb_with_cb(),
+               r.coordination.gap * 1e6);
+    if (r.voxelized) {
+        fmt::print("pores: voxel porosity {:.4f} (with CB pores {:.4f}), chord mean x/y/z {:.3f}/{:.3f}/{:.3f} um, "
+                   "local-thickness peak {:.3f} um, median {:.3f} um, mercury median {:.3f} um\n",
+                   r.voxel_porosity, r.porosity_with_cb_pores, r.chords[0].mean_voxels() * r.voxel * 1e6,
+                   r.chords[1].mean_voxels() * r.voxel * 1e6, r.chords[2].mean_voxels() * r.voxel * 1e6,
+                   r.psd.peak * 1e6, r.psd.median * 1e6, r.psd.mip_median * 1e6);
+        if (r.distance_saturated)
+            fmt::print(stderr, "warning: some pores are wider than 255 voxels; their sizes are cut at that\n");
+    }
+    fmt::print("written to {} in {:.1f} s (peak memory {:.0f} MB)\n", o.output_dir.string(), wall,
+               double(use.ru_maxrss) / 1024.0);
+    return 0;
+}
+
+} // namespace drydem::app

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/io/analysis_writer.hpp"
+#include "drydem/io/particle_io.hpp"
+#include "drydem/git_hash.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+
+namespace drydem {
+
+using namespace analysis;
+
+nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOptions& o, const std::string& source) {
+    nlohmann::ordered_json j;
+    const Bulk& b = r.bulk;
+    j["source"] = source;
+    j["thickness_um"] = b.thickness * 1e6;
+    j["thickness_half_solid_um"] = b.thickness_half_solid * 1e6;
+    j["bulk_solid_fraction"] = b.bulk_solid_fraction;
+    j["areal_loading_mg_cm2"] = b.areal_loading * 100.0;
+    j["density_g_cm3"] = b.density * 1e-3;
+    j["porosity"] = b.porosity;
+    j["density_half_solid_g_cm3"] = b.density_half_solid * 1e-3;
+    j["porosity_half_solid"] = b.porosity_half_solid;
+    j["solids_density_g_cm3"] = b.solids_density * 1e-3;
+    j["cb_binder_porosity_eq2"] = b.cb_binder_porosity;
+    j["ncm_volume_fraction"] = b.ncm_volume_fraction;
+    j["cb_envelope_volume_fraction"] = b.cb_envelope_volume_fraction;
+    j["masses_ug"] = {{"ncm", b.mass.ncm * 1e9}, {"cb_carbon", b.mass.cb_carbon * 1e9}, {"pvdf", b.mass.pvdf * 1e9}};
+    const Coordination& c = r.coordination;
+    j["particles"] = {{"ncm", c.n_ncm}, {"cb", c.n_cb}};
+    j["coordination"] = {
+        {"contact_gap_um", c.gap * 1e6},
+        {"contacts", {{"ncm_ncm", c.ncm_ncm}, {"ncm_cb", c.ncm_cb}, {"cb_cb", c.cb_cb},
+                      {"ncm_substrate", c.ncm_substrate}, {"cb_substrate", c.cb_substrate}}},
+        {"ncm_ncm", c.ncm_with_ncm()},
+        {"ncm_cb", c.ncm_with_cb()},
+        {"cb_ncm", c.cb_with_ncm()},
+        {"cb_cb", c.cb_with_cb()},
+        {"ncm_substrate_fraction", c.n_ncm ? double(c.ncm_substrate) / double(c.n_ncm) : 0.0},
+        {"cb_substrate_fraction", c.n_cb ? double(c.cb_substrate) / double(c.n_cb) : 0.0},
+        {"mean", c.mean()}};
+    j["profile_dz_um"] = o.profile_dz * 1e6;
+    if (r.voxelized) {
+        const double a = r.voxel * 1e6;
+        j["voxel_size_um"] = a;
+        j["voxels"] = {r.nx, r.ny, r.nz};
+        j["pore_top"] = o.pore_top;
+        j["pore_top_um"] = r.pore_top_layer * a;
+        j["voxel_porosity"] = r.voxel_porosity;
+        j["voxel_ncm_fraction"] = r.voxel_ncm_fraction;
+        j["voxel_cb_fraction"] = r.voxel_cb_fraction;
+        j["porosity_with_cb_pores"] = r.porosity_with_cb_pores;
+        const char* axes[3] = {"x", "y", "z"};
+        nlohmann::ordered_json mean, lw, count;
+        for (int d = 0; d < 3; ++d) {
+            mean[axes[d]] = r.chords[std::size_t(d)].mean_voxels() * a;
+            lw[axes[d]] = r.chords[std::size_t(d)].length_weighted_mean_voxels() * a;
+            count[axes[d]] = r.chords[std::size_t(d)].chords();
+        }
+        j["pore_chord_mean_um"] = mean;
+        j["pore_chord_length_weighted_mean_um"] = lw;
+        j["pore_chords"] = count;
+        j["psd_peak_um"] = r.psd.peak * 1e6;
+        j["psd_median_um"] = r.psd.median * 1e6;
+        j["mercury_median_um"] = r.psd.mip_median * 1e6;
+        j["mercury_not_intruded_fraction"] = r.psd.not_intruded;
+        j["distance_saturated"] = r.distance_saturated;
+        j["timings_s"] = {{"voxelize", r.seconds.at(0)}, {"chords", r.seconds.at(1)},
+                          {"distance_transform", r.seconds.at(2)}, {"invasion", r.seconds.at(3)},
+                          {"local_thickness", r.seconds.at(4)}, {"intrusion", r.seconds.at(5)}};
+        j["voxel_memory_mb"] = double(r.memory_bytes) / 1e6;
+    }
+    j["version"] = DRYDEM_VERSION;
+    j["git_commit"] = DRYDEM_GIT_HASH;
+    return j;
+}
+
+void write_analysis(const std::filesystem::path& dir, const AnalysisResult& r, const AnalysisOptions& o,
+                    const std::string& source) {
+    std::filesystem::create_directories(dir);
+    const auto j = analysis_json(r, o, source);
+    write_file_atomically(dir / "analysis.json", [&](std::ostream& os) { os << j.dump(2) << "\n"; });
+    const Profiles& p = r.profiles;
+    write_file_atomically(dir / "profiles.csv", [&](std::ostream& os) {
+        os << "z_lo_um,z_hi_um,z_um,ncm,cb_envelope,cb_carbon,cb_carbon_binder,pore,pore_total,solid\n";
+        const double top = r.bulk.thickness;
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            const double a = double(k) * p.dz, b = std::min(top, double(k + 1) * p.dz);
+            os << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", a * 1e6,
+                              b * 1e6, 0.5 * (a + b) * 1e6, p.ncm[k], p.cb_envelope[k], p.cb_carbon[k], p.cbd[k],
+                              p.pore[k], p.pore_total[k], p.ncm[k] + p.cb_envelope[k]);
+        }
+    });
+    if (!r.voxelized) return;
+    const double a = r.voxel * 1e6;
+    write_file_atomically(dir / "psd_chord.csv", [&](std::ostream& os) {
+        os << "chord_length_um,count_x,count_y,count_z,frequency_x,frequency_y,frequency_z,"
+              "length_fraction_x,length_fraction_y,length_fraction_z\n";
+        std::size_t n = 0;
+        for (const auto& h : r.chords) n = std::max(n, h.count.size());
+        double total[3], length[3];
+        for (int d = 0; d < 3; ++d) {
+            total[d] = double(r.chords[std::size_t(d)].chords());
+            length[d] = r.chords[std::size_t(d)].mean_voxels() * total[d];
+        }
+        for (std::size_t m = 1; m < n; ++m) {
+            std::uint64_t c[3];
+            for (int d = 0; d < 3; ++d) {
+                const auto& h = r.chords[std::size_t(d)].count;
+                c[d] = m < h.size() ? h[m] : 0;
+            }
+            auto f = [&](int d) { return total[d] > 0 ? double(c[d]) / total[d] : 0.0; };
+            auto l = [&](int d) { return length[d] > 0 ? double(c[d]) * double(m) / length[d] : 0.0; };
+            os << fmt::format("{:.6g},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", double(m) * a, c[0], c[1],
+                              c[2], f(0), f(1), f(2), l(0), l(1), l(2));
+        }
+    });
+    write_file_atomically(dir / "psd_local_thickness.csv", [&](std::ostream& os) {
+        os << "diameter_lo_um,diameter_hi_um,diameter_um,volume_fraction,cumulative_finer,"
+              "mercury_volume_fraction,mercury_cumulative_intruded\n";
+        const std::size_t n = std::max(r.psd.volume.size(), r.psd.intruded.size());
+        double finer = 0.0, intruded_total = 0.0;
+        for (double v : r.psd.intruded) intruded_total += v;
+        double intruded_coarser = intruded_total; // intruded at pressures reaching this bin or coarser
+        for (std::size_t m = 0; m < n; ++m) {
+            const double v = m < r.psd.volume.size() ? r.psd.volume[m] : 0.0;
+            const double w = m < r.psd.intruded.size() ? r.psd.intruded[m] : 0.0;
+            finer += v;
+            os << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", double(m) * a, double(m + 1) * a,
+                              (double(m) + 0.5) * a, v, finer, w, intruded_coarser);
+            intruded_coarser -= w;
+        }
+    });
+}
+
+} // namespace drydem
