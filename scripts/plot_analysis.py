@@ -4,7 +4,7 @@ profiles.png  volume fractions of NCM, CB (envelope and carbon + binder) and por
 pore_size.png the pore size distributions: chord lengths (as GeoDict PoroDict, the paper's Fig. 7),
               local thickness (continuous PSD) and the simulated mercury intrusion (dV/dlog d, as
               porosimetry reports it).
-usage: /usr/bin/python3 scripts/plot_analysis.py ANALYSIS_DIR"""
+usage: /usr/bin/python3 scripts/plot_analysis.py ANALYSIS_DIR [PLOTS_DIR (default ANALYSIS_DIR/plots)]"""
 import csv
 import json
 import math
@@ -17,7 +17,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 d = sys.argv[1]
 a = json.load(open(os.path.join(d, 'analysis.json')))
-os.makedirs(os.path.join(d, 'plots'), exist_ok=True)
+plots = sys.argv[2] if len(sys.argv) > 2 else os.path.join(d, 'plots')
+os.makedirs(plots, exist_ok=True)
 
 
 def table(name):
@@ -49,7 +50,7 @@ ax.set_title(f"composition over the height (slabs of {a['profile_dz_um']:.2g} µ
              fontsize=10)
 ax.legend(fontsize=8, loc='lower left')
 fig.tight_layout()
-fig.savefig(os.path.join(d, 'plots', 'profiles.png'), dpi=120)
+fig.savefig(os.path.join(plots, 'profiles.png'), dpi=120)
 
 ch = table('psd_chord.csv')
 lt = table('psd_local_thickness.csv')
@@ -83,5 +84,5 @@ if ch and lt:
                     fontsize=10)
     ax[1].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(d, 'plots', 'pore_size.png'), dpi=120)
-print('plots written to', os.path.join(d, 'plots'))
+    fig.savefig(os.path.join(plots, 'pore_size.png'), dpi=120)
+print('plots written to', plots)

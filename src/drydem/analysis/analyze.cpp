@@ -82,30 +82,50 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     r.seconds.push_back(since(t));
     say(fmt::format("chord lengths in {:.1f} s", r.seconds.back()));
 
-    const std::vector<std::uint16_t> d2 = squared_distance_to_solid(g);
+    // The pore sizes of the coating: the layers below the pore top, open at that plane (where the
+    // mercury enters). The rough surface above is no pore space of the coating.
+    VoxelGrid owned;
+    if (r.pore_top_layer < g.nz) {
+        owned.nx = g.nx;
+        owned.ny = g.ny;
+        owned.nz = r.pore_top_layer;
+        owned.ax = g.ax;
+        owned.ay = g.ay;
+        owned.az = g.az;
+        const std::size_t n = std::size_t(owned.nz) * std::size_t(g.nx) * std::size_t(g.ny);
+        if (o.keep_grid) {
+            owned.label.assign(g.label.begin(), g.label.begin() + std::ptrdiff_t(n));
+        } else {
+            owned.label = std::move(g.label);
+            owned.label.resize(n);
+            owned.label.shrink_to_fit();
+        }
+    }
+    const VoxelGrid& pg = r.pore_top_layer < g.nz ? owned : g;
+    const std::vector<std::uint16_t> d2 = squared_distance_to_solid(pg);
     r.seconds.push_back(since(t));
     say(fmt::format("distance transform in {:.1f} s", r.seconds.back()));
     r.distance_saturated =
         std::any_of(d2.begin(), d2.end(), [](std::uint16_t v) { return v >= squared_distance_cap; });
-    std::vector<std::uint16_t> levels = invasion_levels(g, d2);
+    std::vector<std::uint16_t> levels = invasion_levels(pg, d2);
     r.seconds.push_back(since(t));
     say(fmt::format("invasion from the top in {:.1f} s", r.seconds.back()));
     {
-        const std::vector<std::uint16_t> lt = local_thickness(g, d2);
+        const std::vector<std::uint16_t> lt = local_thickness(pg, d2);
         double unused = 0.0;
-        r.psd.volume = diameter_histogram(g, lt, r.pore_top_layer, unused);
+        r.psd.volume = diameter_histogram(pg, lt, pg.nz, unused);
         r.seconds.push_back(since(t));
         say(fmt::format("local thickness in {:.1f} s", r.seconds.back()));
     }
     {
-        const std::vector<std::uint16_t> mip = intrusion_map(g, levels);
+        const std::vector<std::uint16_t> mip = intrusion_map(pg, levels);
         std::vector<std::uint16_t>().swap(levels);
-        r.psd.intruded = diameter_histogram(g, mip, r.pore_top_layer, r.psd.not_intruded);
+        r.psd.intruded = diameter_histogram(pg, mip, pg.nz, r.psd.not_intruded);
         r.seconds.push_back(since(t));
         say(fmt::format("mercury intrusion in {:.1f} s", r.seconds.back()));
     }
     // labels + distances + levels + one painted map, the peak of the pipeline above.
-    r.memory_bytes = g.size() * (1 + 3 * sizeof(std::uint16_t));
+    r.memory_bytes = (o.keep_grid ? g.size() : 0) + pg.size() * (1 + 3 * sizeof(std::uint16_t));
     r.psd.bin = g.az;
     auto centre = [&](std::size_t m) { return (double(m) + 0.5) * r.psd.bin; };
     const auto peak = std::max_element(r.psd.volume.begin(), r.psd.volume.end());

@@ -31,13 +31,35 @@ const std::vector<std::uint8_t>& isqrt_table() {
     return t;
 }
 
-/// Centres not covered by a 26-neighbour's ball: ball(c) ⊂ ball(n) when r(n) ≥ r(c) + |n - c|,
-/// and then n paints at least as much everywhere c would.
+/// Neighbour offsets of the ridge test: all o ≠ 0 with |o|² ≤ 6 (a 5 x 5 x 5 block without its
+/// corners and edges' ends), with their lengths.
+struct Offset {
+    int di, dj, dk;
+    float length;
+};
+const std::vector<Offset>& ridge_offsets() {
+    static const std::vector<Offset> o = [] {
+        std::vector<Offset> v;
+        for (int dk = -2; dk <= 2; ++dk)
+            for (int dj = -2; dj <= 2; ++dj)
+                for (int di = -2; di <= 2; ++di) {
+                    const int n2 = di * di + dj * dj + dk * dk;
+                    if (n2 > 0 && n2 <= 6) v.push_back({di, dj, dk, float(std::sqrt(double(n2)))});
+                }
+        std::sort(v.begin(), v.end(), [](const Offset& a, const Offset& b) { return a.length < b.length; });
+        return v;
+    }();
+    return o;
+}
+
+/// Centres whose ball lies inside a neighbour's ball with at least the same value are dropped: the
+/// neighbour paints at least as much everywhere. The lattice points of the ball {|p - c|² < v} are
+/// within sqrt(v - 1) of c, so B(c) ⊂ B(n) when sqrt(v - 1) + |n - c| < sqrt(w).
 std::vector<std::vector<Center>> ridge(const VoxelGrid& g, const std::vector<std::uint16_t>& r2) {
     std::vector<float> root(65536);
     for (std::size_t x = 0; x < root.size(); ++x) root[x] = float(std::sqrt(double(x)));
+    const auto& offsets = ridge_offsets();
     std::vector<std::vector<Center>> by_layer(std::size_t(g.nz));
-    static const float step[4] = {0.0f, 1.0f, float(std::sqrt(2.0)), float(std::sqrt(3.0))};
 #pragma omp parallel for schedule(dynamic, 1)
     for (int k = 0; k < g.nz; ++k) {
         auto& out = by_layer[std::size_t(k)];
@@ -45,23 +67,17 @@ std::vector<std::vector<Center>> ridge(const VoxelGrid& g, const std::vector<std
             for (int i = 0; i < g.nx; ++i) {
                 const std::uint16_t v = r2[g.index(i, j, k)];
                 if (v == 0) continue;
-                // A tiny tolerance keeps float rounding from dropping a centre that is not covered.
-                const float rc = root[v] + 1e-4f;
+                // A small margin keeps float rounding from dropping a centre that is not covered.
+                const float inner = root[v - 1u] + 1e-3f;
                 bool covered = false;
-                for (int dk = -1; dk <= 1 && !covered; ++dk) {
-                    const int kk = k + dk;
+                for (const Offset& o : offsets) {
+                    const int kk = k + o.dk;
                     if (kk < 0 || kk >= g.nz) continue;
-                    for (int dj = -1; dj <= 1 && !covered; ++dj) {
-                        const int jj = (j + dj + g.ny) % g.ny;
-                        for (int di = -1; di <= 1; ++di) {
-                            if (di == 0 && dj == 0 && dk == 0) continue;
-                            const int ii = (i + di + g.nx) % g.nx;
-                            const std::uint16_t w = r2[g.index(ii, jj, kk)];
-                            if (w > v && root[w] >= rc + step[std::abs(di) + std::abs(dj) + std::abs(dk)]) {
-                                covered = true;
-                                break;
-                            }
-                        }
+                    const int jj = (j + o.dj + g.ny) % g.ny, ii = (i + o.di + g.nx) % g.nx;
+                    const std::uint16_t w = r2[g.index(ii, jj, kk)];
+                    if (w >= v && root[w] > inner + o.length) {
+                        covered = true;
+                        break;
                     }
                 }
                 if (!covered) out.push_back({i, j, k, v});

@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
     study->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
 
     app::AnalyzeOptions an;
-    std::string an_voxel = "0.1 um", an_dz = "0.5 um", an_gap = "0 um", an_config;
+    std::string an_voxel, an_dz, an_gap, an_config, an_pore_top;
     bool an_no_voxels = false;
     auto* analyze = cli.add_subcommand("analyze", "structure analysis of a particle snapshot (ours, the peers' CSV, "
                                                   "LAMMPS/LIGGGHTS data or dump): thickness, density, profiles, "
@@ -112,10 +112,10 @@ int main(int argc, char** argv) {
                         "config with the formulation and box (default: config.toml beside the snapshot, "
                         "else the embedded default)")->check(CLI::ExistingFile);
     analyze->add_option("--set", sets, "override a config key")->take_all();
-    analyze->add_option("--voxel", an_voxel, "voxel edge, e.g. 0.1um (a bare number is um; 0 = no voxel analysis)");
-    analyze->add_option("--dz", an_dz, "slab width of the height profiles (bare number: um)");
-    analyze->add_option("--contact-gap", an_gap, "surface gap still counted as contact for coordination (bare: um)");
-    analyze->add_option("--pore-top", an.analysis.pore_top,
+    analyze->add_option("--voxel", an_voxel, "voxel edge, e.g. 0.1um (a bare number is um; 0 = no voxel analysis; default analysis.voxel_size)");
+    analyze->add_option("--dz", an_dz, "slab width of the height profiles (bare number: um; default analysis.profile_dz)");
+    analyze->add_option("--contact-gap", an_gap, "surface gap still counted as contact for coordination (bare: um; default analysis.contact_gap)");
+    analyze->add_option("--pore-top", an_pore_top,
                         "top of the pore statistics: half_solid (robust thickness) or highest (highest top)")
         ->check(CLI::IsMember({"half_solid", "highest"}));
     analyze->add_option("--cb-type", an.cb_type, "the file's particle type of the CB spheres (default: n + 1 for n "
@@ -155,15 +155,16 @@ int main(int argc, char** argv) {
                 if (v.find_first_not_of("0123456789.eE+- ") == std::string::npos) v += " um";
                 return parse_quantity(v, Dimension::length, key);
             };
-            an.analysis.voxel = an_no_voxels ? 0.0 : length(an_voxel, "--voxel");
-            an.analysis.profile_dz = length(an_dz, "--dz");
-            an.analysis.contact_gap = length(an_gap, "--contact-gap");
-            if (an.analysis.voxel < 0.0) throw InputError(fmt::format("--voxel {}: must be positive (0 = none)", an_voxel));
-            if (!(an.analysis.profile_dz > 0.0)) throw InputError(fmt::format("--dz {}: must be positive", an_dz));
-            if (an.analysis.contact_gap < 0.0) throw InputError(fmt::format("--contact-gap {}: must be >= 0", an_gap));
             const std::filesystem::path beside = an.snapshot.parent_path() / "config.toml";
             if (an_config.empty() && std::filesystem::exists(beside)) an_config = beside.string();
             const Config c = load(an_config, sets);
+            an.analysis.voxel = an_no_voxels ? 0.0 : an_voxel.empty() ? c.analysis_voxel_size : length(an_voxel, "--voxel");
+            an.analysis.profile_dz = an_dz.empty() ? c.analysis_profile_dz : length(an_dz, "--dz");
+            an.analysis.contact_gap = an_gap.empty() ? c.analysis_contact_gap : length(an_gap, "--contact-gap");
+            an.analysis.pore_top = an_pore_top.empty() ? c.analysis_pore_top : an_pore_top;
+            if (an.analysis.voxel < 0.0) throw InputError(fmt::format("--voxel {}: must be positive (0 = none)", an_voxel));
+            if (!(an.analysis.profile_dz > 0.0)) throw InputError(fmt::format("--dz {}: must be positive", an_dz));
+            if (an.analysis.contact_gap < 0.0) throw InputError(fmt::format("--contact-gap {}: must be >= 0", an_gap));
             an.output_dir = out_dir.empty() ? an.snapshot.parent_path() / "analysis" : std::filesystem::path(out_dir);
             an.plots = !no_plots;
             if (!an.quiet)

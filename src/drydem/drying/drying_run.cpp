@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/drying_run.hpp"
+#include "drydem/analysis/analyze.hpp"
+#include "drydem/io/analysis_writer.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/drying/liquid_level.hpp"
@@ -510,6 +512,35 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     summary["particle_steps_per_s"] =
         double(sim.particles().size()) * double(result.steps) / std::max(result.wall_time, 1e-9);
     summary["config"] = "config.toml";
+    // The structure analysis of the dried film (docs/analysis.md): analysis/ and its plots.
+    bool analysed = false;
+    if (result.completed && c.analysis_at_end) {
+        try {
+            analysis::AnalysisOptions ao;
+            ao.voxel = c.analysis_voxel_size;
+            ao.profile_dz = c.analysis_profile_dz;
+            ao.contact_gap = c.analysis_contact_gap;
+            ao.pore_top = c.analysis_pore_top;
+            ao.log = [&](const std::string& m) { log->info("analysis: {}", m); };
+            const analysis::Structure st =
+                analysis::structure_from_file(read_particles(opt.output_dir / "final.csv"), c);
+            const analysis::AnalysisResult ar = analysis::analyze_structure(st, ao);
+            write_analysis(opt.output_dir / "analysis", ar, ao, "final.csv");
+            summary["analysis"] = "analysis/analysis.json";
+            summary["thickness_half_solid_um"] = ar.bulk.thickness_half_solid * 1e6;
+            summary["cb_binder_porosity_eq2"] = ar.bulk.cb_binder_porosity;
+            summary["coordination_mean"] = ar.coordination.mean();
+            if (ar.voxelized) {
+                summary["psd_peak_um"] = ar.psd.peak * 1e6;
+                summary["pore_chord_mean_um"] = {{"x", ar.chords[0].mean_voxels() * ar.voxel * 1e6},
+                                                 {"y", ar.chords[1].mean_voxels() * ar.voxel * 1e6},
+                                                 {"z", ar.chords[2].mean_voxels() * ar.voxel * 1e6}};
+            }
+            analysed = true;
+        } catch (const std::exception& e) {
+            log->warn("structure analysis failed: {}", e.what());
+        }
+    }
     write_file_atomically(opt.output_dir / "summary.json", [&](std::ostream& o) { o << summary.dump(2) << "\n"; });
     if (result.completed)
         log->info("done: final thickness {:.3f} um, density {:.4f} g/cm3, porosity {:.4f}; {} steps "
@@ -523,6 +554,14 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
             const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' >> '{}' 2>&1", script.string(),
                                                 opt.output_dir.string(), (opt.output_dir / "log.txt").string());
             if (std::system(cmd.c_str()) != 0) log->warn("plotting failed (see log.txt)");
+        }
+        const fs::path an_script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "plot_analysis.py";
+        if (analysed && fs::exists("/usr/bin/python3") && fs::exists(an_script)) {
+            const std::string cmd =
+                fmt::format("/usr/bin/python3 '{}' '{}' '{}' >> '{}' 2>&1", an_script.string(),
+                            (opt.output_dir / "analysis").string(), (opt.output_dir / "plots").string(),
+                            (opt.output_dir / "log.txt").string());
+            if (std::system(cmd.c_str()) != 0) log->warn("plotting the analysis failed (see log.txt)");
         }
     }
     log->flush();

@@ -112,6 +112,13 @@ struct Config {
     std::vector<double> measured_density;         ///< [kg/m^3]; empty or one per measured loading
     std::vector<double> measured_density_std;     ///< [kg/m^3]; empty or one per measured loading
 
+    // [analysis] structure analysis of the final particles (drydem analyze; docs/analysis.md)
+    bool analysis_at_end = true;          ///< analyse final.csv at the end of every run
+    double analysis_voxel_size = 0.1e-6;  ///< [m]; 0 = only the particle-based numbers
+    double analysis_profile_dz = 0.5e-6;  ///< slab width of the height profiles [m]
+    double analysis_contact_gap = 0.0;    ///< coordination: surface gap counted as contact [m]
+    std::string analysis_pore_top = "half_solid"; ///< "half_solid" | "highest"
+
     // [output]
     double timeseries_every = 0.5;       ///< [s physical]
     double snapshot_every = 10.0;        ///< [s physical]; 0 = no intermediate snapshots

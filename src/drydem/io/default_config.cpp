@@ -118,6 +118,13 @@ stability_guard = "adapt"        # adapt: lower dt where dt*lambda_max > 1.8 (ne
                                  # refuse: stop; warn: only warn (M-9.2)
 sort_every = 10                  # spatial re-sort every N neighbor rebuilds
 
+[analysis]                       # structure analysis of final.csv at the end of a run (= drydem analyze)
+at_end = true
+voxel_size = "0.1 um"            # voxel edge of the pore analysis; 0 = only thickness, profiles, coordination
+profile_dz = "0.5 um"            # slab width of the height profiles
+contact_gap = "0 um"             # coordination: surface gap still counted as a contact (0 = touching)
+pore_top = "half_solid"          # pore statistics below the half-solid height ("highest": below the highest top)
+
 [output]
 timeseries_every = "0.5 s"       # physical time between time-series rows
 snapshot_every = "10 s"          # physical time between snapshots (0 = only the final one)
