@@ -30,7 +30,7 @@ def table(name):
 
 
 p = table('profiles.csv')
-fig, ax = plt.subplots(figsize=(5.6, 5.2))
+fig, ax = plt.subplots(figsize=(5.6, 6.4))
 ax.plot(p['ncm'], p['z_um'], color='#c0392b', label='NCM')
 ax.plot(p['cb_envelope'], p['z_um'], color='#555555', label='CB agglomerates (envelope)')
 ax.plot(p['cb_carbon_binder'], p['z_um'], color='#555555', ls=':', label='carbon + binder')
@@ -48,14 +48,14 @@ ax.set_ylabel('height above substrate z / µm')
 ax.set_title(f"composition over the height (slabs of {a['profile_dz_um']:.2g} µm)\n"
              f"{a['areal_loading_mg_cm2']:.2f} mg/cm², {a['density_g_cm3']:.3f} g/cm³, porosity {a['porosity']:.3f}",
              fontsize=10)
-ax.legend(fontsize=8, loc='lower left')
+ax.legend(fontsize=8, loc='upper center', bbox_to_anchor=(0.5, -0.11), ncol=2)
 fig.tight_layout()
 fig.savefig(os.path.join(plots, 'profiles.png'), dpi=120)
 
 ch = table('psd_chord.csv')
 lt = table('psd_local_thickness.csv')
 if ch and lt:
-    fig, ax = plt.subplots(1, 2, figsize=(11, 4.4))
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.4))
     for axis, color in (('x', 'tab:blue'), ('y', 'tab:orange'), ('z', 'tab:green')):
         ax[0].plot(ch['chord_length_um'], ch[f'length_fraction_{axis}'], color=color,
                    label=f"along {axis} (mean {a['pore_chord_mean_um'][axis]:.2f} µm)")
@@ -64,18 +64,27 @@ if ch and lt:
     ax[0].set_ylabel('pore length fraction per chord length / -')
     ax[0].set_title('chord length distribution (as GeoDict PoroDict)', fontsize=10)
     ax[0].legend(fontsize=8)
-    # dV/dlog d per bin: volume fraction / (log10 d_hi - log10 d_lo); first bin starts at 0.
-    mid, lt_dens, hg_dens = [], [], []
+    # dV/dlog d on log-spaced bins (6 per decade): the one-voxel bins alias, because the diameters
+    # on a voxel grid are 2 sqrt(n) for integers n, unevenly spread over the fine bins.
+    lo_all = min(x for x in lt['diameter_lo_um'] if x > 0)
+    hi_all = max(lt['diameter_hi_um'])
+    per_decade = 6
+    n_bins = max(1, int(math.ceil(per_decade * math.log10(hi_all / lo_all))))
+    edges = [lo_all * 10 ** (k / per_decade) for k in range(n_bins + 1)]
+    lt_sum, hg_sum = [0.0] * n_bins, [0.0] * n_bins
     for lo, hi, v, w in zip(lt['diameter_lo_um'], lt['diameter_hi_um'], lt['volume_fraction'],
                             lt['mercury_volume_fraction']):
         if lo <= 0:
             continue
-        width = math.log10(hi / lo)
-        mid.append(math.sqrt(lo * hi))
-        lt_dens.append(v / width)
-        hg_dens.append(w / width)
-    ax[1].plot(mid, lt_dens, color='k', label=f"local thickness (peak {a['psd_peak_um']:.2f} µm)")
-    ax[1].plot(mid, hg_dens, color='tab:purple', ls='--',
+        c = math.sqrt(lo * hi)
+        k = min(n_bins - 1, max(0, int(per_decade * math.log10(c / lo_all))))
+        lt_sum[k] += v
+        hg_sum[k] += w
+    mid = [math.sqrt(edges[k] * edges[k + 1]) for k in range(n_bins)]
+    lt_dens = [v / (1.0 / per_decade) for v in lt_sum]
+    hg_dens = [w / (1.0 / per_decade) for w in hg_sum]
+    ax[1].plot(mid, lt_dens, color='k', marker='.', label=f"local thickness (peak {a['psd_peak_um']:.2f} µm)")
+    ax[1].plot(mid, hg_dens, color='tab:purple', ls='--', marker='.',
                label=f"simulated mercury intrusion (median {a['mercury_median_um']:.2f} µm)")
     ax[1].set_xscale('log')
     ax[1].set_xlabel('pore diameter / µm')
@@ -83,6 +92,18 @@ if ch and lt:
     ax[1].set_title(f"pore size distribution (voxel {a['voxel_size_um']:.3g} µm, below {a['pore_top_um']:.1f} µm)",
                     fontsize=10)
     ax[1].legend(fontsize=8)
+    # Cumulative curves: pore volume in pores finer than d, and the intrusion curve (volume reached
+    # at diameter d or coarser, as a porosimeter records it with rising pressure).
+    d_hi = lt['diameter_hi_um']
+    ax[2].plot(d_hi, lt['cumulative_finer'], color='k', label='local thickness: volume in pores finer than d')
+    ax[2].plot(lt['diameter_lo_um'][1:], lt['mercury_cumulative_intruded'][1:], color='tab:purple', ls='--',
+               label='mercury: volume intruded at d or coarser')
+    ax[2].set_xscale('log')
+    ax[2].set_ylim(0, 1.02)
+    ax[2].set_xlabel('pore diameter d / µm')
+    ax[2].set_ylabel('cumulative pore volume fraction / -')
+    ax[2].set_title('cumulative', fontsize=10)
+    ax[2].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(plots, 'pore_size.png'), dpi=120)
 print('plots written to', plots)
