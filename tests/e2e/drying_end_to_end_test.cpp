@@ -93,6 +93,22 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     const nlohmann::json summary = nlohmann::json::parse(js);
     EXPECT_EQ(summary["status"], "completed");
     EXPECT_NEAR(summary["porosity"].get<double>(), r.porosity, 1e-12);
+
+    // The structure analysis of final.csv (docs/analysis.md): its thickness is the relaxed top, its
+    // mass the run's areal loading, and the pore statistics are there.
+    std::ifstream as(dir / "analysis" / "analysis.json");
+    ASSERT_TRUE(as.good());
+    const nlohmann::json a = nlohmann::json::parse(as);
+    EXPECT_NEAR(a["thickness_um"].get<double>(), r.relaxed_thickness * 1e6, 1e-6);
+    EXPECT_NEAR(a["areal_loading_mg_cm2"].get<double>(), summary["areal_loading_mg_cm2"].get<double>(),
+                2e-3 * summary["areal_loading_mg_cm2"].get<double>());
+    EXPECT_LE(a["thickness_half_solid_um"].get<double>(), a["thickness_um"].get<double>());
+    EXPECT_GT(a["voxel_porosity"].get<double>(), 0.1);
+    EXPECT_GT(a["psd_peak_um"].get<double>(), 0.1);
+    EXPECT_GT(a["coordination"]["mean"].get<double>(), 2.0);
+    for (const char* f : {"profiles.csv", "psd_chord.csv", "psd_local_thickness.csv"})
+        EXPECT_TRUE(std::filesystem::exists(dir / "analysis" / f)) << f;
+    EXPECT_NEAR(summary["psd_peak_um"].get<double>(), a["psd_peak_um"].get<double>(), 1e-12);
 }
 
 // A run that blows up (time step far above the damping bound, guard set to warn only) stops with

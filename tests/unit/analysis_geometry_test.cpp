@@ -210,3 +210,55 @@ TEST(Voxelize, NcmWinsOverCbAndLatticePorosity) {
     EXPECT_NEAR(double(pore) / double(g.size()), 1.0 - pi / 6.0, 0.003);
     EXPECT_THROW((void)voxelize(s, -1.0, 1e-6), InputError);
 }
+
+// The analysis reads any snapshot: the same particles as our CSV and as a LAMMPS dump (with its box)
+// give the same structure and numbers; a type the config does not know is an InputError.
+#include "drydem/core/particles.hpp"
+#include "drydem/io/particle_io.hpp"
+#include "drydem/io/snapshot_writers.hpp"
+#include "test_dirs.hpp"
+#include <fstream>
+
+TEST(AnalysisInput, CsvAndLammpsDumpGiveTheSameStructure) {
+    const auto dir = testing_support::temp_dir();
+    Config c;
+    c.box_x = c.box_y = 20e-6;
+    ParticleStore p;
+    p.add(1, 0, 3.25e-6, 4740.0, {5e-6, 5e-6, 3.3e-6});
+    p.add(2, 4, 5.675e-6, 4740.0, {14e-6, 12e-6, 5.7e-6});
+    for (int i = 0; i < 20; ++i) p.add(std::uint32_t(3 + i), 5, 0.75e-6, 1190.0, {1e-6 * i, 19.5e-6, 0.8e-6 + 0.1e-6 * i});
+    write_particles_csv(dir / "final.csv", p);
+    {
+        std::ofstream dump(dir / "dump.lammpstrj");
+        Box box;
+        box.lx = box.ly = 20e-6;
+        append_lammps_dump(dump, p, box, 100, 12e-6);
+    }
+    const Structure a = structure_from_file(read_particles(dir / "final.csv"), c);
+    const Structure b = structure_from_file(read_particles(dir / "dump.lammpstrj"), c);
+    ASSERT_EQ(a.size(), 22u);
+    ASSERT_EQ(b.size(), 22u);
+    EXPECT_DOUBLE_EQ(b.box.lx, 20e-6);
+    std::size_t cb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a.phase[i], b.phase[i]);
+        EXPECT_NEAR(a.radius[i], b.radius[i], 1e-15);
+        EXPECT_NEAR(a.position[i].z, b.position[i].z, 1e-15);
+        cb += a.phase[i] == Phase::cb;
+    }
+    EXPECT_EQ(cb, 20u);
+    const Masses ma = masses(a), mb = masses(b);
+    EXPECT_NEAR(ma.dry(), mb.dry(), 1e-9 * ma.dry());
+    // CB carbon: (1 - ε_CB) ρ_CB of the envelope, not the file's effective density.
+    EXPECT_NEAR(ma.cb_carbon, 20 * 0.25 * 1660.0 * 4.0 / 3.0 * pi * std::pow(0.75e-6, 3), 1e-9 * ma.cb_carbon);
+    // Type 7 is not in a 5-class config; --cb-type makes it CB and every other type NCM.
+    p.add(99, 6, 1e-6, 1000.0, {1e-6, 1e-6, 1e-6});
+    write_particles_csv(dir / "bad.csv", p);
+    EXPECT_THROW((void)structure_from_file(read_particles(dir / "bad.csv"), c), InputError);
+    PhaseRule rule;
+    rule.cb_type = 7;
+    const Structure d = structure_from_file(read_particles(dir / "bad.csv"), c, rule);
+    std::size_t cb7 = 0;
+    for (auto ph : d.phase) cb7 += ph == Phase::cb;
+    EXPECT_EQ(cb7, 1u);
+}

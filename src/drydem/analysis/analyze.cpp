@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <unistd.h>
 
 namespace drydem::analysis {
 
@@ -57,6 +58,19 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     r.coordination = coordination(s, o.contact_gap);
     if (!(o.voxel > 0.0)) return r;
 
+    // About 7.5 bytes per voxel at the peak (labels, 16-bit distance, level and painted maps, queue,
+    // ridge): refuse what this machine cannot hold instead of dying in the allocation.
+    {
+        const double voxels = double(voxel_count(s, o.voxel, top));
+        const double need = 7.5 * voxels;
+        const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+        if (voxels >= 4.0e9 || (have > 0.0 && need > 0.8 * have))
+            throw InputError(fmt::format(
+                "voxel size {:.3g} um: the voxel image has {:.3g} voxels and needs about {:.1f} GB, more than this "
+                "machine's {:.1f} GB allow (and at most 4e9 voxels); choose a coarser voxel size (analysis.voxel_size "
+                "or --voxel, e.g. {:.2g} um)",
+                o.voxel * 1e6, voxels, need / 1e9, have / 1e9, o.voxel * 1e6 * std::cbrt(need / (0.5 * have)) + 1e-3));
+    }
     auto t = std::chrono::steady_clock::now();
     r.voxelized = true;
     VoxelGrid g = voxelize(s, o.voxel, top);

@@ -11,8 +11,9 @@ namespace drydem::analysis {
 
 namespace {
 
+/// A ball to paint: position within its layer (j nx + i) and squared radius; 8 bytes.
 struct Center {
-    std::int32_t i, j, k;
+    std::uint32_t in_layer;
     std::uint32_t r2;
 };
 
@@ -80,7 +81,7 @@ std::vector<std::vector<Center>> ridge(const VoxelGrid& g, const std::vector<std
                         break;
                     }
                 }
-                if (!covered) out.push_back({i, j, k, v});
+                if (!covered) out.push_back({std::uint32_t(j * g.nx + i), v});
             }
     }
     return by_layer;
@@ -125,6 +126,7 @@ std::vector<std::uint16_t> paint_balls(const VoxelGrid& g, const std::vector<std
         const int z0 = s * slab, z1 = std::min(g.nz, z0 + slab);
         for (int kc = std::max(0, z0 - reach); kc < std::min(g.nz, z1 + reach); ++kc) {
             for (const Center& c : centers[std::size_t(kc)]) {
+                const int ci = int(c.in_layer % std::uint32_t(g.nx)), cj = int(c.in_layer / std::uint32_t(g.nx));
                 const int r = isq[c.r2 - 1]; // |dk| ≤ r with dk² < r²
                 const int k_lo = std::max(z0, kc - r), k_hi = std::min(z1 - 1, kc + r);
                 for (int k = k_lo; k <= k_hi; ++k) {
@@ -133,8 +135,8 @@ std::vector<std::uint16_t> paint_balls(const VoxelGrid& g, const std::vector<std
                     for (int dj = -hj; dj <= hj; ++dj) {
                         const std::uint32_t rem = rem_k - std::uint32_t(dj * dj);
                         const int hi = isq[rem - 1];
-                        const int jj = ((c.j + dj) % g.ny + g.ny) % g.ny;
-                        paint_row(out.data() + g.index(0, jj, k), g.nx, c.i, hi, std::uint16_t(c.r2));
+                        const int jj = ((cj + dj) % g.ny + g.ny) % g.ny;
+                        paint_row(out.data() + g.index(0, jj, k), g.nx, ci, hi, std::uint16_t(c.r2));
                     }
                 }
             }
