@@ -18,8 +18,8 @@ namespace drydem::app {
 
 namespace fs = std::filesystem;
 
-void plot_analysis(const fs::path& dir) {
-    const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "plot_analysis.py";
+void run_plot_script(const std::string& script_name, const fs::path& dir) {
+    const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / script_name;
     if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) {
         fmt::print(stderr, "warning: /usr/bin/python3 or {} missing; no plots\n", script.string());
         return;
@@ -53,7 +53,7 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
         if (!o.quiet) fmt::print("  voxel image: {}, {}{}\n", e.raw.string(), e.mhd.string(),
                                  e.tiff.empty() ? "" : ", " + e.tiff.string());
     }
-    if (o.plots) plot_analysis(o.output_dir);
+    if (o.plots) run_plot_script("plot_analysis.py", o.output_dir);
     rusage use{};
     getrusage(RUSAGE_SELF, &use);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -59,7 +59,7 @@ struct AnalyzeOptions {
     int threads = 0;
 };
 int run_analyze(const Config& c, const AnalyzeOptions& o);
-/// Plots of an analysis folder (scripts/plot_analysis.py).
-void plot_analysis(const std::filesystem::path& dir);
+/// Runs scripts/SCRIPT_NAME DIR with Debian's /usr/bin/python3 (matplotlib); warns, never fails.
+void run_plot_script(const std::string& script_name, const std::filesystem::path& dir);
 
 } // namespace drydem::app

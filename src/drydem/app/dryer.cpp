@@ -25,17 +25,6 @@ std::string rate_text(const std::optional<double>& r) {
     return r ? fmt::format("{:.3f}", *r * 1e6) : std::string("  -  ");
 }
 
-void plot(const std::filesystem::path& dir) {
-    namespace fs = std::filesystem;
-    const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "plot_dryer.py";
-    if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) {
-        fmt::print(stderr, "warning: /usr/bin/python3 or {} missing; no plot\n", script.string());
-        return;
-    }
-    const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), dir.string());
-    if (std::system(cmd.c_str()) != 0) fmt::print(stderr, "warning: plotting failed\n");
-}
-
 } // namespace
 
 int run_dryer(const Config& c, const DryerOptions& o) {
@@ -71,7 +60,7 @@ int run_dryer(const Config& c, const DryerOptions& o) {
         fmt::print("  not dry at the dryer exit: {:.3g} g/m2 NMP left\n", run.samples.back().liquid_mass * 1e3);
     for (const std::string& w : run.warnings) fmt::print(stderr, "warning: {}\n", w);
     fmt::print("  written: {}/dryer.json, dryer.csv\n", o.output_dir.string());
-    if (o.plots) plot(o.output_dir);
+    if (o.plots) run_plot_script("plot_dryer.py", o.output_dir);
     return 0;
 }
 
