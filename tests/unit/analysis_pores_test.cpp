@@ -3,6 +3,7 @@
 // chord lengths of a Boolean model (exponential, mean 4R / (3 (-ln ε))), local thickness of a slit
 // and a cylinder, intrusion through a throat, and the voxel files' round trip.
 #include "drydem/analysis/analyze.hpp"
+#include "drydem/core/error.hpp"
 #include "drydem/analysis/chords.hpp"
 #include "drydem/analysis/distance_transform.hpp"
 #include "drydem/analysis/pore_size.hpp"
@@ -251,4 +252,13 @@ TEST(Analyze, PipelineOnABooleanFilm) {
     EXPECT_NEAR(intruded + r.psd.not_intruded, 1.0, 1e-9);
     // Intrusion is limited by throats: never coarser than the local thickness, median not above it.
     EXPECT_LE(r.psd.mip_median, r.psd.median + 1e-12);
+    // A voxel image beyond the machine (here 1 nm voxels: ~1e12) is refused before any allocation.
+    AnalysisOptions tiny = o;
+    tiny.voxel = 1e-9;
+    try {
+        (void)analyze_structure(s, tiny);
+        ADD_FAILURE() << "no error for a 1e12-voxel image";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("choose a coarser voxel size"), std::string::npos) << e.what();
+    }
 }
