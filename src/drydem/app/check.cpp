@@ -102,6 +102,15 @@ void print_check(const Config& c) {
     fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
     fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers)\n",
                r.particle_count() * (13 * 24.0 + 6 * 8 + 20 * 40) / 1e6 + 5);
+    if (c.analysis_at_end && c.analysis_voxel_size > 0.0) {
+        // docs/analysis.md: about 7.5 bytes per voxel of the image up to the film top (the top
+        // stands above the 2.4 g/cm3 estimate by up to one large particle).
+        const double voxels = c.box_x / c.analysis_voxel_size * (c.box_y / c.analysis_voxel_size) *
+                              ((h_final + r.largest_diameter()) / c.analysis_voxel_size);
+        fmt::print("  analysis at the end       voxel image ~{:.2g} voxels at {:.3g} um, ~{:.1f} GB "
+                   "(analysis.voxel_size; 0 = none)\n",
+                   voxels, c.analysis_voxel_size * 1e6, 7.5 * voxels / 1e9);
+    }
 }
 
 } // namespace drydem::app
