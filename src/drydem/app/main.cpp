@@ -105,8 +105,9 @@ int main(int argc, char** argv) {
     auto* analyze = cli.add_subcommand("analyze", "structure analysis of a particle snapshot (ours, the peers' CSV, "
                                                   "LAMMPS/LIGGGHTS data or dump): thickness, density, profiles, "
                                                   "coordination, pore sizes, voxel image");
-    analyze->add_option("snapshot", an.snapshot, "particle file (final.csv, CSV, LAMMPS data or dump)")
-        ->required()->check(CLI::ExistingFile);
+    analyze->add_option("snapshot", an.snapshot, "particle file (final.csv, CSV, LAMMPS data or dump), or a run "
+                                                 "folder (its final.csv)")
+        ->required()->check(CLI::ExistingPath);
     analyze->add_option("-o,--output", out_dir, "output folder (default: analysis/ beside the snapshot)");
     analyze->add_option("--config", an_config,
                         "config with the formulation and box (default: config.toml beside the snapshot, "
@@ -155,6 +156,12 @@ int main(int argc, char** argv) {
                 if (v.find_first_not_of("0123456789.eE+- ") == std::string::npos) v += " um";
                 return parse_quantity(v, Dimension::length, key);
             };
+            if (std::filesystem::is_directory(an.snapshot)) {
+                if (!std::filesystem::exists(an.snapshot / "final.csv"))
+                    throw InputError(fmt::format("{} is a folder without final.csv (not a finished run); give "
+                                                 "a particle file", an.snapshot.string()));
+                an.snapshot /= "final.csv";
+            }
             const std::filesystem::path beside = an.snapshot.parent_path() / "config.toml";
             if (an_config.empty() && std::filesystem::exists(beside)) an_config = beside.string();
             const Config c = load(an_config, sets);
