@@ -22,4 +22,18 @@ assert 5.0 < ok['thickness_mean_um'] < 12.0 and 0.3 < ok['porosity_mean'] < 0.7,
 print('study.json ok:', ok)
 PY
 [[ -s "$work/plots/thickness_density_vs_loading.png" ]] || { echo "no plot"; exit 1; }
+# The completed run's own plots (paper Figs. 4, 5, 7 and the profiles) and its structure analysis,
+# each a real PNG image that Pillow opens.
+run="$work/runs/L1.50_s12345"
+[[ -s "$run/analysis/analysis.json" ]] || { echo "no analysis of the run"; exit 1; }
+/usr/bin/python3 - "$run/plots" "$work/plots" <<'PY' || exit 1
+import sys
+from PIL import Image
+names = ['film_thickness', 'diagnostics', 'structure_wet_dry', 'profiles', 'pore_size']
+files = [f'{sys.argv[1]}/{n}.png' for n in names] + [f'{sys.argv[2]}/thickness_density_vs_loading.png']
+for f in files:
+    im = Image.open(f)
+    assert im.format == 'PNG' and im.size[0] >= 500 and im.size[1] >= 300, (f, im.format, im.size)
+print('plots ok:', len(files))
+PY
 echo "study smoke test passed"
