@@ -58,11 +58,10 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     r.coordination = coordination(s, o.contact_gap);
     if (!(o.voxel > 0.0)) return r;
 
-    // About 7.5 bytes per voxel at the peak (labels, 16-bit distance, level and painted maps, queue,
-    // ridge): refuse what this machine cannot hold instead of dying in the allocation.
+    // Refuse what this machine cannot hold instead of dying in the allocation.
     {
         const double voxels = double(voxel_count(s, o.voxel, top));
-        const double need = 7.5 * voxels;
+        const double need = voxel_analysis_bytes * voxels;
         const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
         if (voxels >= 4.0e9 || (have > 0.0 && need > 0.8 * have))
             throw InputError(fmt::format(

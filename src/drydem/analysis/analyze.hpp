@@ -17,6 +17,10 @@
 
 namespace drydem::analysis {
 
+/// Peak memory of the voxel analysis per voxel of the image [bytes]: labels, 16-bit distance, level
+/// and painted maps, invasion queue, ridge centres (measured 3.5 GB for 5.3e8 voxels, docs/performance.md).
+inline constexpr double voxel_analysis_bytes = 7.5;
+
 struct AnalysisOptions {
     double voxel = 0.1e-6;        ///< voxel edge [m]; 0 = no voxel analysis
     double profile_dz = 0.5e-6;   ///< slab width of the profiles [m]

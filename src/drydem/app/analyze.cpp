@@ -44,7 +44,7 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
         if (!o.quiet)
             fmt::print("{}: {} particles ({}), box {:.4g} x {:.4g} um; voxel image {:.3g} voxels, about {:.2g} GB\n",
                        o.snapshot.string(), s.size(), file.format, s.box.lx * 1e6, s.box.ly * 1e6, voxels,
-                       voxels * 7.5e-9);
+                       voxels * analysis::voxel_analysis_bytes / 1e9);
     }
     const analysis::AnalysisResult r = analysis::analyze_structure(s, a);
     write_analysis(o.output_dir, r, a, o.snapshot.string());

@@ -2,6 +2,7 @@
 // `drydem check`: every derived quantity of a configuration (counts, wet height, scaled
 // parameters, time step and its limits, memory and cost estimate).
 #include "drydem/app/commands.hpp"
+#include "drydem/analysis/analyze.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/integrate/timestep.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -103,13 +104,13 @@ void print_check(const Config& c) {
     fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers)\n",
                r.particle_count() * (13 * 24.0 + 6 * 8 + 20 * 40) / 1e6 + 5);
     if (c.analysis_at_end && c.analysis_voxel_size > 0.0) {
-        // docs/analysis.md: about 7.5 bytes per voxel of the image up to the film top (the top
+        // docs/analysis.md: the voxel image up to the film top (the top
         // stands above the 2.4 g/cm3 estimate by up to one large particle).
         const double voxels = c.box_x / c.analysis_voxel_size * (c.box_y / c.analysis_voxel_size) *
                               ((h_final + r.largest_diameter()) / c.analysis_voxel_size);
         fmt::print("  analysis at the end       voxel image ~{:.2g} voxels at {:.3g} um, ~{:.1f} GB "
                    "(analysis.voxel_size; 0 = none)\n",
-                   voxels, c.analysis_voxel_size * 1e6, 7.5 * voxels / 1e9);
+                   voxels, c.analysis_voxel_size * 1e6, analysis::voxel_analysis_bytes * voxels / 1e9);
     }
 }
 
