@@ -197,7 +197,9 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
               recipe.wet_film_height * 1e6, c.seed);
 
     EngineSettings es;
-    es.dt = c.time_step;
+    es.integrator = integrator_of(c);
+    const double time_step_cap = time_step_cap_of(c);
+    es.dt = time_step_cap;
     es.skin = c.skin;
     es.threads = c.threads;
     es.sort_every = c.sort_every;
@@ -220,47 +222,53 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     pr.threads = sim.threads();
     pr.seed = c.seed;
 
-    // --- stability guard (M-9.2) ---
-    // The explicit damping modes (lubrication, drag) are stable while Δt λ_max < 2. "adapt" lowers
-    // the step to 1.5/λ_max when Δt λ_max exceeds 1.8 and returns to run.time_step once that is
-    // safe again (never above it); "refuse" stops the run; "warn" only warns.
-    if (!resumed) pr.dt_min = c.time_step;
+    // --- stability guard (docs/model.md "Stability guard") ---
+    // At every neighbour rebuild the rates of what stays explicit are estimated on the laws' own
+    // operators; "adapt" sets Δt to the guarded step (never above the cap run.time_step),
+    // "refuse" stops the run where Δt is beyond the stability bound, "warn" only warns.
+    if (!resumed) pr.dt_min = sim.settings().dt;
+    double guard_wall = 0.0; // this session's wall time in the guard [s]
     auto guard = [&](bool at_start) {
-        const auto b = sim.damping_bound();
-        const double dt = sim.settings().dt, lambda = b.dt_lambda / dt;
+        const auto guard_start = Clock::now();
+        const auto e = sim.stability_estimate();
+        guard_wall += std::chrono::duration<double>(Clock::now() - guard_start).count();
+        const double dt = sim.settings().dt;
         if (c.stability_guard == "adapt") {
-            const double target = std::min(c.time_step, 1.5 / lambda);
-            if (b.dt_lambda > 1.8 || dt < c.time_step) {
-                if (target < dt)
-                    log->debug("step {}: dt {:.3g} -> {:.3g} s (dt*Lambda was {:.3g} at particle {})",
-                               sim.step_count(), dt, target, b.dt_lambda, b.particle_id);
-                sim.set_time_step(target);
-                pr.dt_min = std::min(pr.dt_min, target);
-            }
-            return lambda * sim.settings().dt;
+            const double target = guarded_time_step(time_step_cap, e);
+            if (target != dt)
+                log->debug("step {}: dt {:.3g} -> {:.3g} s (damping {:.3g} /s, stiffness {:.3g} "
+                           "rad/s, at particle {}; {} power iterations)",
+                           sim.step_count(), dt, target, e.damping_rate, e.stiffness_rate,
+                           e.particle_id, e.iterations);
+            sim.set_time_step(target);
+            pr.dt_min = std::min(pr.dt_min, target);
+            return stability_indicator(target, e);
         }
-        if (b.dt_lambda >= 2.0) {
+        const double indicator = stability_indicator(dt, e);
+        if (indicator >= 2.0) {
             const std::string msg = fmt::format(
-                "time step {:.3g} s is above the explicit stability bound of the damping forces: "
-                "dt*Lambda = {:.3g} >= 2 at particle {} (model.md M-9.2); lower run.time_step or "
-                "use numerics.stability_guard = \"adapt\"",
-                dt, b.dt_lambda, b.particle_id);
+                "time step {:.3g} s is beyond the explicit stability bound: dt*lambda = {:.3g} >= 2 "
+                "at particle {} (damping rate {:.3g} /s, stiffness rate {:.3g} rad/s; docs/model.md "
+                "\"Stability guard\"); lower run.time_step or use numerics.stability_guard = "
+                "\"adapt\"",
+                dt, indicator, e.particle_id, e.damping_rate, e.stiffness_rate);
             if (c.stability_guard == "refuse") {
                 if (at_start) throw InputError(msg);
                 throw RunError(msg);
             }
             log->warn("{}", msg);
-        } else if (b.dt_lambda > 1.5 && b.dt_lambda > pr.warned_lambda + 0.05) {
-            pr.warned_lambda = b.dt_lambda; // warn again only when it keeps rising
-            log->warn("time step {:.3g} s is close to the damping stability bound: dt*Lambda = "
-                      "{:.3g} at particle {}", dt, b.dt_lambda, b.particle_id);
+        } else if (indicator > 1.5 && indicator > pr.warned_lambda + 0.05) {
+            pr.warned_lambda = indicator; // warn again only when it keeps rising
+            log->warn("time step {:.3g} s is close to the stability bound: dt*lambda = {:.3g} at "
+                      "particle {}", dt, indicator, e.particle_id);
         }
-        return b.dt_lambda;
+        return indicator;
     };
     // A resumed run must not re-run the guard here: the uninterrupted run only runs it at rebuilds.
     if (!resumed) pr.dt_lambda = guard(true);
-    log->info("threads {}, dt = {:.3g} s (scaled), dt*Lambda = {:.3g} (stable < 2), level speeds "
-              "{} m/s (scaled)", sim.threads(), sim.settings().dt, pr.dt_lambda,
+    log->info("threads {}, integrator {}, dt = {:.3g} s (scaled, cap {:.3g} s), dt*lambda = {:.3g} "
+              "(stable < 2), level speeds {} m/s (scaled)", sim.threads(), c.integrator,
+              sim.settings().dt, time_step_cap, pr.dt_lambda,
               fmt::join(scaled.level_speeds_scaled, ", "));
 
     // --- outputs (a resumed run cuts them back to the checkpoint and continues them) ---
@@ -501,8 +509,16 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                 ? fmt::format("dryer model (preset {}, final porosity {:.4g})", c.dryer_preset, c.dryer_final_porosity)
                 : std::string("dryer.shrinkage_rates");
     }
-    summary["time_step_s"] = c.time_step;
+    summary["integrator"] = c.integrator;
+    summary["time_step_s"] = time_step_cap;
     summary["time_step_min_s"] = pr.dt_min;
+    summary["time_step_mean_s"] = result.steps > 0 ? sim.time() / double(result.steps) : 0.0;
+    {
+        const PhaseTimes& pt = sim.phase_times();
+        summary["wall_time_phases_s"] = {{"pair", pt.pair}, {"neighbor", pt.neighbor},
+                                         {"integrate", pt.integrate}, {"guard", guard_wall}};
+        summary["neighbor_builds"] = sim.neighbors().builds();
+    }
     summary["steps"] = result.steps;
     summary["seed"] = c.seed;
     summary["resumed"] = opt.resume;

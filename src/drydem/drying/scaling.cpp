@@ -98,4 +98,13 @@ ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
     return ff;
 }
 
+Integrator integrator_of(const Config& c) {
+    return c.integrator == "explicit" ? Integrator::explicit_verlet : Integrator::semi_implicit;
+}
+
+double time_step_cap_of(const Config& c) {
+    if (c.time_step > 0.0) return c.time_step;
+    return integrator_of(c) == Integrator::explicit_verlet ? 1.0e-11 : 1.0e-10;
+}
+
 } // namespace drydem

@@ -4,6 +4,7 @@
 //   level speed × k, time ÷ k, gravity × k/b, Stokes viscosity ÷ b, Hamaker × hamaker_factor,
 //   capillary force × capillary_factor; lubrication keeps the full viscosity (C-17).
 #pragma once
+#include "drydem/engine/simulation.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -29,6 +30,12 @@ struct ScaledParameters {
 };
 
 ScaledParameters scale_parameters(const Config& c);
+
+/// numerics.integrator as the engine's enum.
+Integrator integrator_of(const Config& c);
+/// The largest time step of the run: run.time_step, or with 0 the integrator's default cap
+/// (explicit 1e-11 s, C-23; semi-implicit 1e-10 s, the contact limit, docs/model.md).
+double time_step_cap_of(const Config& c);
 nlohmann::json to_json(const ScaledParameters& s);
 
 /// Species pair table and particle forces of the drying simulation, from the recipe's species

@@ -16,6 +16,7 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
+    allocate_integrator();
     stats_.layer_top = p_.size() ? -INFINITY : 0.0;
     for (std::size_t i = 0; i < p_.size(); ++i) {
         box_.wrap(p_.position[i]);
@@ -34,6 +35,25 @@ Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSett
     thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     nl_.restore(std::move(state.neighbors));
+    allocate_integrator();
+    if (semi_implicit()) {
+        if (state.accel.size() != p_.size() || state.alpha.size() != p_.size())
+            throw InputError("checkpoint: the state holds no semi-implicit accelerations (it was "
+                             "written by the explicit integrator); resume with the same "
+                             "numerics.integrator");
+        accel_ = std::move(state.accel);
+        alpha_ = std::move(state.alpha);
+    }
+}
+
+void Simulation::allocate_integrator() {
+    if (!semi_implicit()) return;
+    const std::size_t n = p_.size();
+    body_resistance_.assign(n, {});
+    block_.assign(n, {});
+    thread_block_.assign(std::size_t(threads_ - 1), std::vector<SelfBlock>(n));
+    accel_.assign(n, {});
+    alpha_.assign(n, {});
 }
 
 std::vector<std::int32_t> Simulation::coordination() const {
@@ -54,8 +74,8 @@ std::vector<std::int32_t> Simulation::coordination() const {
 }
 
 EngineState Simulation::state() const {
-    return {p_, nl_.state(), step_, time_, liquid_level_, settings_.dt, stats_, force_rebuild_,
-            rebuilds_since_sort_};
+    return {p_, nl_.state(), step_, time_, liquid_level_, settings_.dt, stats_, accel_, alpha_,
+            force_rebuild_, rebuilds_since_sort_};
 }
 
 void Simulation::rebuild_neighbors() {
@@ -75,7 +95,21 @@ void Simulation::rebuild_neighbors() {
                                  p_.radius[j]);
     };
     const double t0 = omp_get_wtime();
-    nl_.build(p_, box_, range, owner_range, sort);
+    if (sort && semi_implicit()) {
+        // The body resistances were written with the particle forces, before this re-sort:
+        // carry them to the new storage order by id.
+        std::vector<std::uint32_t> ids = p_.id;
+        nl_.build(p_, box_, range, owner_range, sort);
+        std::uint32_t max_id = 0;
+        for (std::uint32_t id : ids) max_id = std::max(max_id, id);
+        std::vector<std::uint32_t> old_index(std::size_t(max_id) + 1);
+        for (std::size_t k = 0; k < ids.size(); ++k) old_index[ids[k]] = std::uint32_t(k);
+        std::vector<BodyResistance> moved(p_.size());
+        for (std::size_t k = 0; k < p_.size(); ++k) moved[k] = body_resistance_[old_index[p_.id[k]]];
+        body_resistance_.swap(moved);
+    } else {
+        nl_.build(p_, box_, range, owner_range, sort);
+    }
     force_rebuild_ = false;
     times_.neighbor += omp_get_wtime() - t0;
 }
@@ -87,15 +121,40 @@ void Simulation::compute_forces() {
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(+ : wall_contacts) reduction(max : wall_overlap)
     for (std::size_t i = 0; i < p_.size(); ++i) body_forces(i, wall_contacts, wall_overlap);
     pair_forces(wall_contacts, wall_overlap);
+    if (semi_implicit()) {
+#pragma omp parallel for schedule(static) num_threads(threads_)
+        for (std::size_t i = 0; i < p_.size(); ++i) implicit_acceleration(i);
+    }
+}
+
+void Simulation::implicit_acceleration(std::size_t i) {
+    ParticleStore& p = p_;
+    SelfBlock d = block_[i];
+    block_[i] = SelfBlock{};
+    add_self_block(d, body_resistance_[i]);
+    solve_self_block(d, settings_.dt, p.mass[i], 1.0 / p.inv_inertia[i], p.force[i], p.torque[i],
+                     accel_[i], alpha_[i]);
 }
 
 void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     if (force_rebuild_) rebuild_neighbors();
     const double t0 = omp_get_wtime();
+    std::size_t contacts = 0;
+    double max_overlap = wall_overlap;
+    if (semi_implicit()) pair_loop<true>(contacts, max_overlap);
+    else pair_loop<false>(contacts, max_overlap);
+    stats_.contacts = contacts;
+    stats_.wall_contacts = wall_contacts;
+    stats_.max_overlap_rel = max_overlap;
+    times_.pair += omp_get_wtime() - t0;
+}
+
+template <bool SelfBlocks>
+void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
     const std::size_t n = p_.size();
     const double dt = settings_.dt;
     std::size_t contacts = 0;
-    double max_overlap = wall_overlap;
+    double max_overlap = max_overlap_out;
     ParticleStore& p = p_;
     const std::size_t species_count = std::size_t(ff_.species_count);
     const PairParams* pair_table = ff_.pair.data();
@@ -104,18 +163,22 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     // forces already), the others into their own buffers, which the reduction adds in a fixed
     // order and leaves zeroed for the next step. (A variant that evaluated batches of 64 pairs in
     // one `omp simd` loop was measured 20 % slower: the gathers and masked branches cost more
-    // than the overlapped divisions save.)
+    // than the overlapped divisions save.) With SelfBlocks, each pair's dissipative resistance
+    // is also added to both particles' self-blocks (semi-implicit kick).
 #pragma omp parallel num_threads(threads_) reduction(+ : contacts) reduction(max : max_overlap)
     {
         const int t = omp_get_thread_num();
         Vec3* force = t == 0 ? p.force.data() : thread_force_[t - 1].data();
         Vec3* torque = t == 0 ? p.torque.data() : thread_torque_[t - 1].data();
+        SelfBlock* block = nullptr;
+        if constexpr (SelfBlocks) block = t == 0 ? block_.data() : thread_block_[t - 1].data();
 #pragma omp for schedule(static)
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 xi = p.position[i];
             const double ri = p.radius[i];
             const PairParams* row = pair_table + std::size_t(p.species[i]) * species_count;
             Vec3 fi{}, ti{};
+            SelfBlock di{};
             const std::uint32_t row_end = nl_.end(i);
             for (std::uint32_t s = nl_.begin(i); s < row_end; ++s) {
                 const std::uint32_t j = nl_.partner(s);
@@ -142,7 +205,17 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
                     ++contacts;
                     max_overlap = std::max(max_overlap, -g.gap / std::min(ri, rj));
                 }
-                const PairForce f = pair_interaction(g, row[p.species[j]], hist, dt);
+                PairForce f;
+                if constexpr (SelfBlocks) {
+                    PairResistance r;
+                    f = pair_interaction(g, row[p.species[j]], hist, dt, &r);
+                    if (r.normal > 0.0 || r.sliding > 0.0 || r.rolling > 0.0) {
+                        add_self_block(di, r, g.n, r.lever_i, 1.0);
+                        add_self_block(block[j], r, g.n, r.lever_j, -1.0);
+                    }
+                } else {
+                    f = pair_interaction(g, row[p.species[j]], hist, dt);
+                }
                 fi += f.force_i;
                 ti += f.torque_i;
                 force[j] -= f.force_i;
@@ -150,6 +223,7 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
             }
             force[i] += fi;
             torque[i] += ti;
+            if constexpr (SelfBlocks) block[i] += di;
         }
         // Fixed-order reduction of the thread buffers.
         if (threads_ > 1) {
@@ -160,20 +234,27 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
                     p.torque[i] += thread_torque_[k][i];
                     thread_force_[k][i] = Vec3{};
                     thread_torque_[k][i] = Vec3{};
+                    if constexpr (SelfBlocks) {
+                        block_[i] += thread_block_[k][i];
+                        thread_block_[k][i] = SelfBlock{};
+                    }
                 }
         }
     }
-    stats_.contacts = contacts;
-    stats_.wall_contacts = wall_contacts;
-    stats_.max_overlap_rel = max_overlap;
-    times_.pair += omp_get_wtime() - t0;
+    contacts_out = contacts;
+    max_overlap_out = max_overlap;
 }
 
 void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap) {
     ParticleStore& p = p_;
+    BodyResistance* resistance = nullptr;
+    if (semi_implicit()) {
+        body_resistance_[i] = BodyResistance{};
+        resistance = &body_resistance_[i];
+    }
     const BodyForce b = particle_forces(ff_, p.species[i], p.radius[i], p.density[i], p.mass[i],
                                         p.position[i], p.velocity[i], p.omega[i], liquid_level_,
-                                        p.wall_history[i], settings_.dt);
+                                        p.wall_history[i], settings_.dt, resistance);
     p.force[i] = b.force;
     p.torque[i] = b.torque;
     if (ff_.substrate_on && p.position[i].z < p.radius[i]) {
@@ -185,6 +266,7 @@ void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& 
 void Simulation::step() {
     const std::size_t n = p_.size();
     const double dt = settings_.dt, half = 0.5 * dt;
+    const bool semi = semi_implicit();
     ParticleStore& p = p_;
     const auto& x_build = nl_.positions_at_build();
     double t_start = omp_get_wtime();
@@ -197,8 +279,13 @@ void Simulation::step() {
     // state, so they are computed in the same pass (step 4, first half).
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_disp2, wall_overlap) reduction(+ : wall_contacts)
     for (std::size_t i = 0; i < n; ++i) {
-        p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
-        p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
+        if (semi) {
+            p.velocity[i] += half * accel_[i];
+            p.omega[i] += half * alpha_[i];
+        } else {
+            p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
+            p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
+        }
         p.position[i] += dt * p.velocity[i];
         box_.wrap(p.position[i]);
         max_disp2 = std::max(max_disp2, norm2(box_.minimum_image(x_build[i], p.position[i])));
@@ -219,8 +306,14 @@ void Simulation::step() {
     bool finite = true;
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : top) reduction(&& : finite)
     for (std::size_t i = 0; i < n; ++i) {
-        p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
-        p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
+        if (semi) {
+            implicit_acceleration(i);
+            p.velocity[i] += half * accel_[i];
+            p.omega[i] += half * alpha_[i];
+        } else {
+            p.velocity[i] += (half * p.inv_mass[i]) * p.force[i];
+            p.omega[i] += (half * p.inv_inertia[i]) * p.torque[i];
+        }
         top = std::max(top, p.position[i].z + p.radius[i]);
         finite = finite && is_finite(p.velocity[i]) && is_finite(p.omega[i]);
     }
@@ -293,105 +386,5 @@ Vec3 Simulation::momentum() const {
 } // namespace drydem
 
 namespace drydem {
-
-Simulation::DampingBound Simulation::damping_bound() const {
-    // M-9.2: stability of the explicit damping modes (lubrication, Stokes drag). Each dissipative
-    // pair acts as a damper of rate coefficient c_ij = max(γ_n, 3.5 γ_t) (3.5 = 1 + r² m / I: the
-    // sliding mode includes rotation) between i and j; each particle has its own coefficient d_i
-    // (substrate lubrication, Stokes drag). The kick is stable while Δt λ_max < 2, λ_max the largest
-    // eigenvalue of M^-1/2 (L_c + D) M^-1/2 (L_c: weighted graph Laplacian). Gershgorin on this
-    // symmetric form gives Λ_i = Σ_j c_ij (1/m_i + 1/sqrt(m_i m_j)) + d_i/m_i, which for equal
-    // masses is M-9.2's formula and, unlike M-9.2's column form, does not charge every light CB
-    // neighbour's rate to a heavy NCM sphere. In a dense agglomerate Gershgorin overestimates
-    // λ_max up to twofold, so when it exceeds 1.5/Δt the eigenvalue itself is estimated by power
-    // iteration on the same matrix.
-    const ParticleStore& p = p_;
-    const std::size_t n = p.size();
-    constexpr double pi = std::numbers::pi;
-    // Scratch kept between calls: the guard runs at every rebuild and should not allocate.
-    GuardScratch& scratch = guard_scratch_;
-    auto& dampers = scratch.dampers;
-    auto &own = scratch.own, &lambda = scratch.lambda;
-    dampers.clear();
-    own.assign(n, 0.0);
-    lambda.assign(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double r = p.radius[i];
-        own[i] = stokes_drag_coefficient(r, ff_.drag);
-        const SubstrateLubricationParams& w = ff_.substrate_lubrication;
-        if (ff_.substrate_on && w.viscosity > 0.0 && p.position[i].z - r <= r) {
-            const double k_e = std::max((p.position[i].z - r) / r, w.kappa_c);
-            const double l = -std::log(k_e);
-            const double g_n = 6 * pi * w.viscosity * r * substrate_lubrication_x(k_e) *
-                               vinogradova_factor(k_e, w.kappa_c);
-            const double g_t = 6 * pi * w.viscosity * r * ((8.0 / 15.0) * l + (64.0 / 375.0) * k_e * l);
-            own[i] += std::max(g_n, 3.5 * g_t);
-        }
-        lambda[i] += own[i] * p.inv_mass[i];
-        for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
-            const std::uint32_t j = nl_.partner(s);
-            const LubricationParams& lp = ff_.pair_params(p.species[i], p.species[j]).lubrication;
-            if (lp.viscosity <= 0.0) continue;
-            const double r_l = lubrication_radius(r, p.radius[j]);
-            const double gap =
-                norm(box_.minimum_image(p.position[i], p.position[j])) - r - p.radius[j];
-            if (gap > r_l) continue;
-            const double k_e = std::max(gap / r_l, lp.kappa_c);
-            const double g_n = 6 * pi * lp.viscosity * r_l * lubrication_x(k_e) *
-                               vinogradova_factor(k_e, lp.kappa_c);
-            const double g_t = pi * lp.viscosity * r_l * -std::log(k_e);
-            const double c = std::max(g_n, 3.5 * g_t);
-            const double cross_term = std::sqrt(p.inv_mass[i] * p.inv_mass[j]);
-            lambda[i] += c * (p.inv_mass[i] + cross_term);
-            lambda[j] += c * (p.inv_mass[j] + cross_term);
-            dampers.push_back({std::uint32_t(i), j, c});
-        }
-    }
-    DampingBound out;
-    std::size_t worst = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (lambda[i] > lambda[worst]) worst = i;
-    if (n == 0) return out;
-    out.gershgorin = lambda[worst] * settings_.dt;
-    out.dt_lambda = out.gershgorin;
-    out.particle_id = p.id[worst];
-    if (out.gershgorin <= 1.5) return out;
-
-    // Power iteration for λ_max of S = M^-1/2 (L_c + D) M^-1/2, started at the Gershgorin maximum
-    // (plus a small deterministic spread so that no eigenvector is missed).
-    auto &x = scratch.x, &u = scratch.u, &y = scratch.y;
-    x.resize(n);
-    u.resize(n);
-    y.resize(n);
-    for (std::size_t i = 0; i < n; ++i) x[i] = 1e-3 * (1.0 + std::sin(double(i) * 12.9898));
-    x[worst] = 1.0;
-    double estimate = 0.0;
-    for (int it = 0; it < 200; ++it) {
-        double norm_x = 0.0;
-        for (double v : x) norm_x += v * v;
-        norm_x = std::sqrt(norm_x);
-        for (std::size_t i = 0; i < n; ++i) {
-            x[i] /= norm_x;
-            u[i] = x[i] * std::sqrt(p.inv_mass[i]);
-            y[i] = own[i] * u[i];
-        }
-        for (const auto& d : dampers) {
-            const double f = d.c * (u[d.i] - u[d.j]);
-            y[d.i] += f;
-            y[d.j] -= f;
-        }
-        double rayleigh = 0.0;
-        for (std::size_t i = 0; i < n; ++i) {
-            y[i] *= std::sqrt(p.inv_mass[i]);
-            rayleigh += x[i] * y[i];
-        }
-        const bool converged = it > 20 && std::abs(rayleigh - estimate) < 1e-4 * rayleigh;
-        estimate = rayleigh;
-        if (converged) break;
-        x.swap(y);
-    }
-    out.dt_lambda = estimate * settings_.dt;
-    return out;
-}
 
 } // namespace drydem

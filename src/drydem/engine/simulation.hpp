@@ -12,6 +12,12 @@
 
 namespace drydem {
 
+/// Time integration (docs/model.md "Resistance and time integration").
+enum class Integrator {
+    explicit_verlet, ///< velocity Verlet, every force explicit (the reference; Δt < 2/λ_max of M⁻¹R)
+    semi_implicit,   ///< v += Δt (M_i + Δt D_i)⁻¹ F_i: the dissipative forces do not limit Δt
+};
+
 struct EngineSettings {
     double dt = 1.0e-11;         ///< time step [s] (C-23)
     double skin = 0.1e-6;        ///< neighbor skin [m] (M-9.4)
@@ -19,6 +25,7 @@ struct EngineSettings {
     int sort_every = 10;         ///< spatial re-sort every this many rebuilds (0 = never)
     double overlap_limit = 1.0;  ///< stop when an overlap exceeds this fraction of the smaller radius
     double initial_liquid_level = 1.0e30; ///< z_L at t = 0 [m] (far above: no capillary force)
+    Integrator integrator = Integrator::explicit_verlet;
 };
 
 /// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).
@@ -48,6 +55,9 @@ struct EngineState {
     double liquid_level = 0.0;        ///< [m]
     double dt = 0.0;                  ///< current Δt (the stability guard may have lowered it)
     StepStats stats;
+    /// Semi-implicit only: (M_i + Δt D_i)⁻¹ [F_i; T_i] of the last evaluation, which the next
+    /// step's first half kick uses (empty for the explicit integrator).
+    std::vector<Vec3> accel, alpha;
     bool force_rebuild = false;
     std::uint64_t rebuilds_since_sort = 0;
 };
@@ -96,14 +106,20 @@ public:
     [[nodiscard]] double kinetic_energy() const;
     /// Total linear momentum [kg m/s].
     [[nodiscard]] Vec3 momentum() const;
-    /// Δt λ_max of the explicit damping modes (M-9.2) with the current neighbor list; stability
-    /// needs < 2. Also the Gershgorin bound and the particle id where it is largest.
-    struct DampingBound {
-        double dt_lambda = 0.0;   ///< Δt λ_max (power iteration where Gershgorin exceeds 1.5)
-        double gershgorin = 0.0;  ///< Δt max_i Λ_i, the cheap upper bound
-        std::uint32_t particle_id = 0; ///< where Λ_i is largest
+    /// Rates that limit the step of what stays explicit (docs/model.md "Stability guard"),
+    /// estimated on the laws' own linear operators by power iteration from a random start
+    /// (warm-started from the last estimate's vectors), gaps reduced by the skin:
+    /// damping_rate: λ_max of M⁻¹R (R: the resistance of every dissipative law; explicit
+    /// integrator only, 0 otherwise), stable for Δt λ < 2;
+    /// stiffness_rate: sqrt(λ_max) of M_eff⁻¹K (K: contact springs, van der Waals, capillary
+    /// spring; M_eff = M, or M + Δt D for the semi-implicit kick), stable for Δt ω < 2.
+    struct StabilityEstimate {
+        double damping_rate = 0.0;    ///< [1/s]
+        double stiffness_rate = 0.0;  ///< [rad/s]
+        std::uint32_t particle_id = 0; ///< where the limiting mode is largest
+        int iterations = 0;           ///< power iterations spent
     };
-    [[nodiscard]] DampingBound damping_bound() const;
+    [[nodiscard]] StabilityEstimate stability_estimate() const;
 
     /// Computes forces at the current state (also done by the constructor).
     void compute_forces();
@@ -114,7 +130,16 @@ private:
     void body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap);
     /// Pair forces added to the store; completes the step statistics.
     void pair_forces(std::size_t wall_contacts, double wall_overlap);
+    template <bool SelfBlocks>
+    void pair_loop(std::size_t& contacts, double& max_overlap);
+    /// Semi-implicit: the accelerations (M_i + Δt D_i)⁻¹ [F_i; T_i] of particle i, its pair
+    /// self-block reset for the next evaluation.
+    void implicit_acceleration(std::size_t i);
+    [[nodiscard]] bool semi_implicit() const {
+        return settings_.integrator == Integrator::semi_implicit;
+    }
     void check_health();
+    void allocate_integrator();
 
     ParticleStore p_;
     Box box_;
@@ -131,18 +156,25 @@ private:
     StepStats stats_;
     PhaseTimes times_;
     std::uint64_t rebuilds_since_sort_ = 0;
-    struct GuardScratch {
-        struct Damper {
-            std::uint32_t i, j;
-            double c;
-        };
-        std::vector<Damper> dampers;
-        std::vector<double> own, lambda, x, u, y;
-    };
-    mutable GuardScratch guard_scratch_; ///< damping_bound()'s work arrays, reused
+    // Semi-implicit integrator: body resistance of each particle (written with the particle
+    // forces, permuted with the particles on a re-sort), pair self-blocks (thread 0; the other
+    // threads in their buffers), and the resulting accelerations.
+    std::vector<BodyResistance> body_resistance_;
+    std::vector<SelfBlock> block_;
+    std::vector<std::vector<SelfBlock>> thread_block_;
+    std::vector<Vec3> accel_, alpha_;
+    mutable std::vector<double> guard_vector_[2]; ///< last estimate's vectors (warm start)
     // Per-thread force/torque buffers (thread 0 writes into the store): a fixed reduction order
     // makes results identical run to run for a given thread count.
     std::vector<std::vector<Vec3>> thread_force_, thread_torque_;
 };
+
+/// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below 2.
+double stability_indicator(double dt, const Simulation::StabilityEstimate& e);
+
+/// The guard's policy (docs/model.md "Stability guard"): the largest step with Δt λ_damping ≤ 1.5
+/// and Δt ω_stiffness ≤ 1 (the first-order overdamped update stays monotone, an undamped contact
+/// gets ~6 steps per period), never above `cap`.
+double guarded_time_step(double cap, const Simulation::StabilityEstimate& e);
 
 } // namespace drydem

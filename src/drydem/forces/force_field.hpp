@@ -29,14 +29,22 @@ inline double interaction_range(const PairParams& p, double r_i, double r_j) {
                     lubrication_range(p.lubrication, r_i, r_j));
 }
 
-/// Pair forces in the order of M-9.5: contact (δ > 0), van der Waals, lubrication.
+/// Pair forces in the order of M-9.5: contact (δ > 0), van der Waals, lubrication. When
+/// `resistance` is given, it receives the sum of the dissipative laws' resistances (contact
+/// damping and lubrication share the lever arms r + h/2, resistance.hpp).
 inline PairForce pair_interaction(const PairGeometry& g, const PairParams& p, Vec3& tangential,
-                                  double dt) {
+                                  double dt, PairResistance* resistance = nullptr) {
     PairForce f{};
-    if (g.gap < 0.0) f += hertz_mindlin(g, p.contact, tangential, dt);
+    if (g.gap < 0.0) f += hertz_mindlin(g, p.contact, tangential, dt, resistance);
     else tangential = Vec3{}; // contact opened: history erased (M-2.3)
     f += van_der_waals(g, p.van_der_waals);
-    f += lubrication(g, p.lubrication);
+    const PairResistance lub = lubrication_resistance(g, p.lubrication);
+    f += resistance_force(lub, g.n, g.v_rel, g.omega_i, g.omega_j);
+    if (resistance) {
+        *resistance += lub;
+        resistance->lever_i = g.r_i + 0.5 * g.gap;
+        resistance->lever_j = g.r_j + 0.5 * g.gap;
+    }
     return f;
 }
 
@@ -57,18 +65,23 @@ struct ForceField {
 };
 
 /// Particle forces in the order of M-9.5: substrate contact and lubrication, Stokes drag,
-/// weight minus buoyancy, capillary force of the liquid level.
+/// weight minus buoyancy, capillary force of the liquid level. When `resistance` is given, it
+/// receives the sum of the dissipative laws' resistances (resistance.hpp body form).
 inline BodyForce particle_forces(const ForceField& ff, int species, double r, double density,
                                  double mass, const Vec3& x, const Vec3& v, const Vec3& omega,
-                                 double liquid_level, Vec3& wall_history, double dt) {
+                                 double liquid_level, Vec3& wall_history, double dt,
+                                 BodyResistance* resistance = nullptr) {
     BodyForce f{};
+    BodyResistance fluid = stokes_drag_resistance(r, ff.drag);
     if (ff.substrate_on) {
-        f += substrate_contact(x.z, r, mass, v, omega, ff.substrate[species], wall_history, dt);
-        f += substrate_lubrication(x.z, r, v, omega, ff.substrate_lubrication);
+        f += substrate_contact(x.z, r, mass, v, omega, ff.substrate[species], wall_history, dt,
+                               resistance);
+        fluid += substrate_lubrication_resistance(x.z, r, ff.substrate_lubrication);
     }
-    f += stokes_drag(r, v, omega, ff.drag);
+    f += resistance_force(fluid, v, omega);
     f.force += gravity_buoyancy(r, density, ff.gravity);
     f.force += capillary_front(x.z, r, liquid_level, ff.capillary);
+    if (resistance) *resistance += fluid;
     return f;
 }
 

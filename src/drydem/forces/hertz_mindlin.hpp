@@ -7,6 +7,7 @@
 //   F_t = -S_t ξ - γ_t v_t, |F_t| ≤ μ_s |F_n|                  (M-2.3)
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
+#include "drydem/forces/resistance.hpp"
 #include <cmath>
 #include <numbers>
 
@@ -47,6 +48,21 @@ inline HertzMindlinParams mix_hertz_mindlin(double e_i, double nu_i, double e_j,
     return p;
 }
 
+/// Stiffnesses and damping coefficients of a contact with overlap δ (M-2.1); shared by the law,
+/// its resistance (resistance.hpp) and the stability guard's stiffness operator.
+struct HertzMindlinCoefficients {
+    double s_n, s_t;         ///< S_n = 2 E* sqrt(R* δ), S_t = 8 G* sqrt(R* δ) [N/m]
+    double gamma_n, gamma_t; ///< γ_n, γ_t [kg/s]
+};
+inline HertzMindlinCoefficients hertz_mindlin_coefficients(double r_eff, double overlap,
+                                                           double m_eff,
+                                                           const HertzMindlinParams& p) {
+    const double sqrt_rd = std::sqrt(r_eff * overlap);
+    const double root = std::sqrt(sqrt_rd * m_eff); // (R* δ)^{1/4} sqrt(m*)
+    return {2.0 * p.e_star * sqrt_rd, 8.0 * p.g_star * sqrt_rd, p.damping_n * root,
+            p.damping_t * root};
+}
+
 /// Contact state of the shared law below: overlap δ > 0, lever arms from the centres to the
 /// contact point, R*, m*, normal n (from i toward the partner) and the kinematics.
 struct ContactKinematics {
@@ -58,30 +74,32 @@ struct ContactKinematics {
     Vec3 omega_i, omega_j;
 };
 
-/// Output of the contact law: force on i, torques on i and j, |F_n| (for diagnostics).
+/// Output of the contact law: force on i, torques on i and j, |F_n| (for diagnostics), and the
+/// damping it applied (resistance.hpp pair form: γ_n, and γ_t only while the contact sticks).
 struct ContactForce {
     Vec3 force_i;
     Vec3 torque_i;
     Vec3 torque_j;
     double normal_force;
+    double damping_n, damping_t;
 };
 
 /// Evaluates the Hertz-Mindlin law and advances the tangential history `xi` by one step dt.
 inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const HertzMindlinParams& p,
                                           Vec3& xi, double dt) {
     const Vec3& n = k.n;
-    const double sqrt_rd = std::sqrt(k.r_eff * k.overlap);
-    const double s_n = 2.0 * p.e_star * sqrt_rd;
-    const double s_t = 8.0 * p.g_star * sqrt_rd;
-    const double root = std::sqrt(sqrt_rd * k.m_eff); // (R* δ)^{1/4} sqrt(m*)
-    const double gamma_n = p.damping_n * root;          // 2 sqrt(5/6) β sqrt(S_n m*)
-    const double gamma_t = p.damping_t * root;          // 2 sqrt(5/6) β sqrt(S_t m*)
+    const HertzMindlinCoefficients co = hertz_mindlin_coefficients(k.r_eff, k.overlap, k.m_eff, p);
+    const double s_n = co.s_n, s_t = co.s_t;
+    const double gamma_n = co.gamma_n; // 2 sqrt(5/6) β sqrt(S_n m*)
+    const double gamma_t = co.gamma_t; // 2 sqrt(5/6) β sqrt(S_t m*)
 
     const double v_n = dot(k.v_rel, n);
     // M-2.2: elastic (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ, plus viscous damping; not clipped.
     const double fn_mag = (2.0 / 3.0) * s_n * k.overlap + gamma_n * v_n;
     ContactForce out;
     out.normal_force = std::abs(fn_mag);
+    out.damping_n = gamma_n;
+    out.damping_t = gamma_t;
     out.force_i = -fn_mag * n;
 
     // M-2.3: contact-point velocity and its tangential part.
@@ -105,6 +123,7 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
         const double scale = f_coulomb / std::sqrt(spring2);
         xi *= scale;
         ft = -s_t * xi;
+        out.damping_t = 0.0;
     }
     out.force_i += ft;
     // Torques from the tangential force at the contact point (M-2.3).
@@ -125,14 +144,19 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
     return out;
 }
 
-/// Particle-particle contact (δ = -h > 0), lever arms c = r - δ/2.
+/// Particle-particle contact (δ = -h > 0), lever arms c = r - δ/2. `damping` receives the
+/// viscous part as a resistance (resistance.hpp pair form).
 inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& p, Vec3& xi,
-                               double dt) {
+                               double dt, PairResistance* damping = nullptr) {
     const double overlap = -g.gap;
     const ContactKinematics k{g.n,        overlap,           g.r_eff,   g.m_eff,
                               g.r_i - 0.5 * overlap, g.r_j - 0.5 * overlap, g.v_rel,
                               g.omega_i,  g.omega_j};
     const ContactForce c = hertz_mindlin_contact(k, p, xi, dt);
+    if (damping) {
+        damping->normal += c.damping_n;
+        damping->sliding += c.damping_t;
+    }
     return {c.force_i, c.torque_i, c.torque_j};
 }
 

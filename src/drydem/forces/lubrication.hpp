@@ -18,6 +18,7 @@
 // Viscosity: the unreduced liquid η = 1.801 Pa s (C-17).
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
+#include "drydem/forces/resistance.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -48,7 +49,9 @@ inline double vinogradova_factor(double kappa, double kappa_c) {
     return (q / 3.0) * ((1.0 + q / 6.0) * std::log1p(6.0 / q) - 1.0);
 }
 
-inline PairForce lubrication(const PairGeometry& g, const LubricationParams& p) {
+/// The law's resistance (resistance.hpp pair form): a_n = 6πη r_L X f*, a_t = πη r_L L,
+/// a_r = 8πη r_L³ (3/40) L, a_w = 8πη r_L³ (1/8) κ_e L, levers r + h/2. Zero beyond κ = 1.
+inline PairResistance lubrication_resistance(const PairGeometry& g, const LubricationParams& p) {
     if (p.viscosity <= 0.0) return {};
     const double r_l = 2.0 * g.r_eff;
     const double kappa = g.gap / r_l;
@@ -56,22 +59,17 @@ inline PairForce lubrication(const PairGeometry& g, const LubricationParams& p) 
     const double k_e = std::max(kappa, p.kappa_c); // freeze below h_c and in overlap
     const double log_k = std::log(k_e), l = -log_k;
     const double pi_eta = std::numbers::pi * p.viscosity;
-    const Vec3& n = g.n;
+    const double rot = 8.0 * pi_eta * r_l * r_l * r_l * l;
+    return {6.0 * pi_eta * r_l * lubrication_x(k_e, log_k) * vinogradova_factor(k_e, p.kappa_c),
+            pi_eta * r_l * l,
+            (3.0 / 40.0) * rot,
+            0.125 * k_e * rot,
+            g.r_i + 0.5 * g.gap,
+            g.r_j + 0.5 * g.gap};
+}
 
-    const Vec3 f_n =
-        (-6.0 * pi_eta * r_l * lubrication_x(k_e, log_k) * vinogradova_factor(k_e, p.kappa_c) * g.v_n) * n;
-
-    const double c_i = g.r_i + 0.5 * g.gap, c_j = g.r_j + 0.5 * g.gap;
-    const Vec3 v_s = g.v_rel + cross(c_i * g.omega_i + c_j * g.omega_j, n);
-    const Vec3 f_t = (-pi_eta * r_l * l) * perp(v_s, n);
-
-    // Pure relative rotation: rolling (3/40) and twisting (κ/8) resistance, equal and opposite.
-    const Vec3 w_r = g.omega_i - g.omega_j;
-    const double w_n = dot(w_r, n);
-    const Vec3 t_r = (8.0 * pi_eta * r_l * r_l * r_l * l) *
-                     ((3.0 / 40.0) * perp(w_r, n) + (0.125 * k_e * w_n) * n);
-    const Vec3 lever = cross(n, f_t);
-    return {f_n + f_t, c_i * lever - t_r, c_j * lever + t_r};
+inline PairForce lubrication(const PairGeometry& g, const LubricationParams& p) {
+    return resistance_force(lubrication_resistance(g, p), g.n, g.v_rel, g.omega_i, g.omega_j);
 }
 
 /// Largest gap h at which the law acts: r_L (h ≤ r_L); 0 when disabled.

@@ -6,6 +6,7 @@
 // (C-17). Acts on every particle at all times, also above the liquid level (C-19).
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
+#include "drydem/forces/resistance.hpp"
 #include <numbers>
 
 namespace drydem {
@@ -20,12 +21,17 @@ inline double stokes_drag_coefficient(double r, const StokesDragParams& p) {
     return 6.0 * std::numbers::pi * p.viscosity * r;
 }
 
+/// The law's resistance (resistance.hpp body form): a_z = a_t = 6π(η/b) r, d_t = d_z = 8π(η/b) r³
+/// (rotation only when enabled).
+inline BodyResistance stokes_drag_resistance(double r, const StokesDragParams& p) {
+    const double a = stokes_drag_coefficient(r, p);
+    const double d = p.rotational ? 8.0 * std::numbers::pi * p.viscosity * r * r * r : 0.0;
+    return {a, a, 0.0, d, d};
+}
+
 inline BodyForce stokes_drag(double r, const Vec3& v, const Vec3& omega,
                              const StokesDragParams& p) {
-    BodyForce out;
-    out.force = -stokes_drag_coefficient(r, p) * v;
-    if (p.rotational) out.torque = (-8.0 * std::numbers::pi * p.viscosity * r * r * r) * omega;
-    return out;
+    return resistance_force(stokes_drag_resistance(r, p), v, omega);
 }
 
 } // namespace drydem

@@ -23,9 +23,11 @@
 namespace drydem {
 
 /// Hertz-Mindlin contact with the substrate; `wall_history` is the tangential spring ξ of the
-/// (id, substrate) contact, erased when the contact opens (M-2.3, M-2.5).
+/// (id, substrate) contact, erased when the contact opens (M-2.3, M-2.5). `damping` receives the
+/// viscous part as a resistance (resistance.hpp body form).
 inline BodyForce substrate_contact(double z, double r, double m, const Vec3& v, const Vec3& omega,
-                                   const HertzMindlinParams& p, Vec3& wall_history, double dt) {
+                                   const HertzMindlinParams& p, Vec3& wall_history, double dt,
+                                   BodyResistance* damping = nullptr) {
     const double overlap = r - z;
     if (overlap <= 0.0) {
         wall_history = {};
@@ -33,6 +35,7 @@ inline BodyForce substrate_contact(double z, double r, double m, const Vec3& v, 
     }
     const ContactKinematics k{Vec3{0.0, 0.0, -1.0}, overlap, r, m, r - overlap, 0.0, v, omega, {}};
     const ContactForce c = hertz_mindlin_contact(k, p, wall_history, dt);
+    if (damping) *damping += wall_pair_resistance(c.damping_n, c.damping_t, k.lever_i);
     return {c.force_i, c.torque_i};
 }
 
@@ -49,8 +52,10 @@ inline double substrate_lubrication_x(double kappa) {
     return substrate_lubrication_x(kappa, std::log(kappa));
 }
 
-inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const Vec3& omega,
-                                       const SubstrateLubricationParams& p) {
+/// The law's resistance (resistance.hpp body form): a_z = 6πη r X_w f*, a_t = 6πη r A_w,
+/// b = 6πη r² B_w, d_t = 8πη r³ D_w, d_z = 8πη r³ κ_e L / 2. Zero beyond κ = 1.
+inline BodyResistance substrate_lubrication_resistance(double z, double r,
+                                                       const SubstrateLubricationParams& p) {
     if (p.viscosity <= 0.0) return {};
     const double kappa = (z - r) / r;
     if (kappa > 1.0) return {};
@@ -61,16 +66,13 @@ inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const 
     const double d_w = 0.4 * l + (66.0 / 125.0) * k_e * l;
     const double c_f = 6.0 * std::numbers::pi * p.viscosity * r;         // 6πη r
     const double c_r = 8.0 * std::numbers::pi * p.viscosity * r * r * r; // 8πη r³
-    const Vec3 z_hat{0.0, 0.0, 1.0};
-    const Vec3 v_t{v.x, v.y, 0.0};
-    const Vec3 w_t{omega.x, omega.y, 0.0};
-    const double x_w = substrate_lubrication_x(k_e, log_k) * vinogradova_factor(k_e, p.kappa_c);
-    BodyForce out;
-    out.force =
-        (-c_f * x_w * v.z) * z_hat - (c_f * a_w) * v_t + (c_f * r * b_w) * cross(omega, z_hat);
-    out.torque = (c_f * r * b_w) * cross(z_hat, v_t) - (c_r * d_w) * w_t -
-                 (c_r * 0.5 * k_e * l * omega.z) * z_hat;
-    return out;
+    return {c_f * substrate_lubrication_x(k_e, log_k) * vinogradova_factor(k_e, p.kappa_c),
+            c_f * a_w, c_f * r * b_w, c_r * d_w, c_r * 0.5 * k_e * l};
+}
+
+inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const Vec3& omega,
+                                       const SubstrateLubricationParams& p) {
+    return resistance_force(substrate_lubrication_resistance(z, r, p), v, omega);
 }
 
 /// Largest gap z - r at which the substrate lubrication acts: r; 0 when disabled.

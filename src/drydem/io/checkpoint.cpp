@@ -10,7 +10,7 @@ namespace drydem {
 namespace {
 
 constexpr char kMagic[8] = {'D', 'R', 'Y', 'D', 'E', 'M', 'C', 'K'};
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;
 
 std::uint64_t fnv1a(const unsigned char* data, std::size_t n) {
     std::uint64_t h = 14695981039346656037ull;
@@ -39,6 +39,7 @@ void each_field(State& s, F&& field) {
     field(s.step), field(s.time), field(s.liquid_level), field(s.dt);
     field(s.stats.contacts), field(s.stats.wall_contacts), field(s.stats.max_overlap_rel);
     field(s.stats.layer_top), field(s.force_rebuild), field(s.rebuilds_since_sort);
+    field(s.accel), field(s.alpha); // format 2: the semi-implicit kick's accelerations
 }
 template <class T> struct is_vector : std::false_type {};
 template <class T> struct is_vector<std::vector<T>> : std::true_type {};

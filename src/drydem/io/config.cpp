@@ -38,7 +38,7 @@ const std::vector<Field>& schema() {
     static const std::vector<Field> fields = {
         {"run.name", &Config::name},
         {"run.seed", &Config::seed, D::dimensionless, 0, 1.8e19},
-        {"run.time_step", &Config::time_step, D::time, 0, 1e-6, true},
+        {"run.time_step", &Config::time_step, D::time, 0, 1e-6},
         {"run.threads", &Config::threads, D::dimensionless, 0, 1024},
         {"run.max_process_time", &Config::max_process_time, D::time, 0, inf, true},
         {"film.areal_loading", &Config::areal_loading, D::areal_density, 0, inf, true},
@@ -122,6 +122,8 @@ const std::vector<Field>& schema() {
         {"numerics.overlap_limit", &Config::overlap_limit, D::dimensionless, 0, 2, true},
         {"numerics.stability_guard", &Config::stability_guard, D::dimensionless, -inf, inf, false,
          {"adapt", "refuse", "warn"}},
+        {"numerics.integrator", &Config::integrator, D::dimensionless, -inf, inf, false,
+         {"semi_implicit", "explicit"}},
         {"numerics.sort_every", &Config::sort_every, D::dimensionless, 0, 1e6},
         {"study.loadings", &Config::study_loadings, D::areal_density, 0, inf, true, {}, true},
         {"study.seeds", &Config::study_seeds, D::dimensionless, 1, 1000},

@@ -20,7 +20,7 @@ struct Config {
     // [run]
     std::string name = "lippke2022-20.1mgcm2";
     std::uint64_t seed = 12345;
-    double time_step = 1.0e-11;          ///< simulated (scaled) Δt [s] (C-23)
+    double time_step = 0.0;              ///< largest simulated (scaled) Δt [s]; 0 = by integrator
     int threads = 0;                     ///< 0 = all cores
     double max_process_time = 300.0;     ///< safety stop [s physical]
 
@@ -101,6 +101,7 @@ struct Config {
     double skin = 0.1e-6;
     double overlap_limit = 1.0;
     std::string stability_guard = "adapt"; ///< "adapt" | "refuse" | "warn" (M-9.2)
+    std::string integrator = "semi_implicit"; ///< "semi_implicit" | "explicit" (docs/model.md)
     int sort_every = 10;
 
     // [study] (drydem study; paper Fig. 6)

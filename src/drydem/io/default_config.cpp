@@ -12,7 +12,8 @@ std::string_view default_config_toml() {
 [run]
 name = "lippke2022-20.1mgcm2"
 seed = 12345
-time_step = "1e-11 s"        # scaled time step (model.md C-23; guarded by M-9.2)
+time_step = 0                # largest scaled time step; 0 = 1e-10 s (semi_implicit) or 1e-11 s
+                             # (explicit); the stability guard may lower it (docs/model.md)
 threads = 0                  # 0 = all cores
 max_process_time = "300 s"   # safety stop (physical time)
 
@@ -114,8 +115,10 @@ measured_density_std = []
 [numerics]
 skin = "0.1 um"
 overlap_limit = 1.0              # stop (runaway overlap) when an overlap reaches this fraction of the smaller radius
-stability_guard = "adapt"        # adapt: lower dt where dt*lambda_max > 1.8 (never above time_step);
-                                 # refuse: stop; warn: only warn (M-9.2)
+integrator = "semi_implicit"     # semi_implicit: v += dt (M + dt D)^-1 F, the viscous forces do not
+                                 # limit dt; explicit: velocity Verlet, the reference (docs/model.md)
+stability_guard = "adapt"        # adapt: dt = the guarded step (never above run.time_step);
+                                 # refuse: stop beyond the stability bound; warn: only warn
 sort_every = 10                  # spatial re-sort every N neighbor rebuilds
 
 [analysis]                       # structure analysis of final.csv at the end of a run (= drydem analyze)

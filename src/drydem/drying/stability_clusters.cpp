@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/drying/stability_clusters.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace drydem {
+
+std::vector<ReferenceCluster> reference_clusters(const FilmRecipe& recipe, double overlap) {
+    const int cb = recipe.cb_species();
+    int ncm = 0; // the largest NCM class
+    for (int s = 0; s < cb; ++s)
+        if (recipe.species[s].diameter > recipe.species[ncm].diameter) ncm = s;
+    const double rc = 0.5 * recipe.species[cb].diameter, rn = 0.5 * recipe.species[ncm].diameter;
+    const double rho_c = recipe.species[cb].density, rho_n = recipe.species[ncm].density;
+    const double x0 = 20e-6, y0 = 20e-6, z0 = 30e-6; // far from the substrate
+    std::vector<ReferenceCluster> out;
+
+    ReferenceCluster on_ncm{"CB on one NCM", {}};
+    on_ncm.particles.add(1, std::uint8_t(ncm), rn, rho_n, {x0, y0, z0});
+    on_ncm.particles.add(2, std::uint8_t(cb), rc, rho_c, {x0, y0, z0 + rn + rc - overlap});
+    out.push_back(std::move(on_ncm));
+
+    ReferenceCluster neck{"CB between two NCM", {}};
+    const double a = rn - 0.5 * overlap; // half the NCM-NCM centre distance (touching)
+    const double y = std::sqrt(std::pow(rn + rc - overlap, 2) - a * a);
+    neck.particles.add(1, std::uint8_t(ncm), rn, rho_n, {x0 - a, y0, z0});
+    neck.particles.add(2, std::uint8_t(ncm), rn, rho_n, {x0 + a, y0, z0});
+    neck.particles.add(3, std::uint8_t(cb), rc, rho_c, {x0, y0 + y, z0});
+    out.push_back(std::move(neck));
+
+    ReferenceCluster fcc{"fcc cluster of 13 CB", {}};
+    const double d = (2.0 * rc - overlap) / std::sqrt(2.0); // nearest neighbours at 2r - δ
+    fcc.particles.add(1, std::uint8_t(cb), rc, rho_c, {x0, y0, z0});
+    std::uint32_t id = 2;
+    for (int u = -1; u <= 1; u += 2)
+        for (int v = -1; v <= 1; v += 2) {
+            fcc.particles.add(id++, std::uint8_t(cb), rc, rho_c, {x0 + u * d, y0 + v * d, z0});
+            fcc.particles.add(id++, std::uint8_t(cb), rc, rho_c, {x0 + u * d, y0, z0 + v * d});
+            fcc.particles.add(id++, std::uint8_t(cb), rc, rho_c, {x0, y0 + u * d, z0 + v * d});
+        }
+    out.push_back(std::move(fcc));
+
+    ReferenceCluster wall{"CB on the substrate under an NCM", {}};
+    const double zc = rc - overlap;
+    wall.particles.add(1, std::uint8_t(cb), rc, rho_c, {x0, y0, zc});
+    wall.particles.add(2, std::uint8_t(ncm), rn, rho_n, {x0, y0, zc + rc + rn - overlap});
+    out.push_back(std::move(wall));
+    return out;
+}
+
+Simulation cluster_simulation(const Config& c, const FilmRecipe& recipe, const ReferenceCluster& k,
+                              double skin) {
+    EngineSettings es;
+    es.integrator = integrator_of(c);
+    es.dt = time_step_cap_of(c);
+    es.skin = skin >= 0.0 ? skin : c.skin;
+    es.threads = 1;
+    return Simulation(k.particles, Box{std::max(c.box_x, 60e-6), std::max(c.box_y, 60e-6)},
+                      make_drying_force_field(c, recipe, scale_parameters(c)), es);
+}
+
+} // namespace drydem
