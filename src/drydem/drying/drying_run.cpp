@@ -200,7 +200,7 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     es.integrator = integrator_of(c);
     const double time_step_cap = time_step_cap_of(c);
     es.dt = time_step_cap;
-    es.skin = c.skin;
+    es.skin = skin_of(c);
     es.threads = c.threads;
     es.sort_every = c.sort_every;
     es.overlap_limit = c.overlap_limit;

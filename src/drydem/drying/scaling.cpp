@@ -107,4 +107,9 @@ double time_step_cap_of(const Config& c) {
     return integrator_of(c) == Integrator::explicit_verlet ? 1.0e-11 : 1.0e-10;
 }
 
+double skin_of(const Config& c) {
+    if (c.skin > 0.0) return c.skin;
+    return integrator_of(c) == Integrator::explicit_verlet ? 0.1e-6 : 0.3e-6;
+}
+
 } // namespace drydem

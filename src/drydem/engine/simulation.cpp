@@ -12,7 +12,7 @@ namespace drydem {
 
 Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(particles)), box_(box), ff_(std::move(forces)), settings_(settings),
-      nl_(settings.skin), liquid_level_(settings.initial_liquid_level) {
+      nl_(settings.skin, settings.threads), liquid_level_(settings.initial_liquid_level) {
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
@@ -27,7 +27,7 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
 
 Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(state.particles)), box_(box), ff_(std::move(forces)), settings_(settings),
-      nl_(settings.skin), step_(state.step), time_(state.time), liquid_level_(state.liquid_level),
+      nl_(settings.skin, settings.threads), step_(state.step), time_(state.time), liquid_level_(state.liquid_level),
       force_rebuild_(state.force_rebuild), stats_(state.stats),
       rebuilds_since_sort_(state.rebuilds_since_sort) {
     settings_.dt = state.dt;

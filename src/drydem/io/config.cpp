@@ -118,7 +118,7 @@ const std::vector<Field>& schema() {
         {"drying.relaxation", &Config::relaxation, D::time, 0, inf},
         {"drying.fluid_forces_above_level", &Config::fluid_forces_above_level, D::dimensionless,
          -inf, inf, false, {"keep"}},
-        {"numerics.skin", &Config::skin, D::length, 0, 10e-6, true},
+        {"numerics.skin", &Config::skin, D::length, 0, 10e-6},
         {"numerics.overlap_limit", &Config::overlap_limit, D::dimensionless, 0, 2, true},
         {"numerics.stability_guard", &Config::stability_guard, D::dimensionless, -inf, inf, false,
          {"adapt", "refuse", "warn"}},
@@ -330,7 +330,8 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
     if (!c.ncm_diameters.empty()) {
         const double d_max = *std::max_element(c.ncm_diameters.begin(), c.ncm_diameters.end());
         const double cb_reach = 1.5 * c.cb_diameter;
-        const double need = 2.0 * (std::max(1.5 * d_max, cb_reach) + c.skin);
+        const double skin = c.skin > 0.0 ? c.skin : 0.3e-6; // 0: the largest automatic skin
+        const double need = 2.0 * (std::max(1.5 * d_max, cb_reach) + skin);
         for (const auto& [key, side] : {std::pair{"film.box_x", c.box_x}, std::pair{"film.box_y", c.box_y}})
             if (side < need)
                 throw InputError(fmt::format(

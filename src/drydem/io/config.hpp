@@ -98,7 +98,7 @@ struct Config {
     std::string fluid_forces_above_level = "keep"; ///< C-19: "keep" (only option implemented)
 
     // [numerics]
-    double skin = 0.1e-6;
+    double skin = 0.0; ///< neighbour skin [m]; 0 = by integrator (skin_of)
     double overlap_limit = 1.0;
     std::string stability_guard = "adapt"; ///< "adapt" | "refuse" | "warn" (M-9.2)
     std::string integrator = "semi_implicit"; ///< "semi_implicit" | "explicit" (docs/model.md)

@@ -113,7 +113,8 @@ measured_density = []            # empty or one per measured loading, e.g. "2.4 
 measured_density_std = []
 
 [numerics]
-skin = "0.1 um"
+skin = 0                         # neighbour skin; 0 = 0.1 um (explicit) or 0.3 um (semi_implicit:
+                                 # its longer steps would rebuild the list every few dozen steps)
 overlap_limit = 1.0              # stop (runaway overlap) when an overlap reaches this fraction of the smaller radius
 integrator = "semi_implicit"     # semi_implicit: v += dt (M + dt D)^-1 F, the viscous forces do not
                                  # limit dt; explicit: velocity Verlet, the reference (docs/model.md)

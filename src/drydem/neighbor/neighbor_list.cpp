@@ -52,7 +52,7 @@ void NeighborList::sort_by_cell(ParticleStore& p) {
 void NeighborList::carry_history(const ParticleStore& p) {
     if (old_offset_.empty()) return;
     const std::size_t n = p.size();
-#pragma omp parallel for schedule(dynamic, 512)
+#pragma omp parallel for schedule(dynamic, 512) num_threads(threads_)
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t orow = old_row_of_id_[p.id[i]];
         if (orow == UINT32_MAX) continue;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <vector>
+#include <omp.h>
 
 namespace drydem {
 
@@ -21,7 +22,8 @@ class NeighborList {
 public:
     /// skin: extra distance beyond every pair's interaction range; rebuild when some particle moved
     /// more than skin/2 since the last build.
-    explicit NeighborList(double skin = 0.1e-6) : skin_(skin) {}
+    explicit NeighborList(double skin = 0.1e-6, int threads = 0)
+        : skin_(skin), threads_(threads > 0 ? threads : omp_get_max_threads()) {}
 
     [[nodiscard]] double skin() const { return skin_; }
     [[nodiscard]] std::size_t owners() const { return offset_.empty() ? 0 : offset_.size() - 1; }
@@ -96,6 +98,7 @@ private:
     void carry_history(const ParticleStore& p);
 
     double skin_;
+    int threads_; ///< OpenMP threads of the build (the engine's)
     std::uint64_t builds_ = 0;
     Grid grid_;
     std::vector<std::uint32_t> offset_, partner_;
@@ -169,7 +172,7 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
             }
     };
     // Two passes (count, fill) keep the build parallel and the row order deterministic.
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads_)
     for (std::size_t i = 0; i < n; ++i) {
         std::uint32_t count = 0;
         visit(i, [&](std::uint32_t, double) { ++count; });
@@ -179,7 +182,7 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
     partner_.resize(offset_[n]);
     reach2_.resize(offset_[n]);
     history_.assign(offset_[n], Vec3{});
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads_)
     for (std::size_t i = 0; i < n; ++i) {
         std::uint32_t s = offset_[i];
         visit(i, [&](std::uint32_t j, double reach2) {
