@@ -153,6 +153,12 @@ Unit power(Unit u, int e) {
         r.num *= u.num;
         r.den *= u.den;
     }
+    // Nested powers ("((m^9)^9)^9") would overflow the int exponents: no real unit goes near.
+    constexpr long max_dim = 64, max_pow10 = 100000;
+    auto too_big = [&](long v, long limit) { return v * e > limit || v * e < -limit; };
+    if (too_big(u.pow10, max_pow10) ||
+        std::any_of(u.dims.begin(), u.dims.end(), [&](int d) { return too_big(d, max_dim); }))
+        throw UnitSyntax("the unit's exponents are too large");
     r.pow10 = u.pow10 * e;
     for (std::size_t k = 0; k < r.dims.size(); ++k) r.dims[k] = u.dims[k] * e;
     return r;
@@ -205,6 +211,8 @@ private:
     std::string_view s_;
     std::size_t pos_ = 0;
     int factors_ = 0;
+    int depth_ = 0; ///< open parentheses: the recursion is bounded, never a stack overflow
+    static constexpr int max_depth = 16;
 
     bool at(std::string_view t) const { return s_.substr(pos_).starts_with(t); }
     void skip_ws() {
@@ -254,8 +262,11 @@ private:
     Unit factor() {
         Unit u;
         if (pos_ < s_.size() && s_[pos_] == '(') {
+            if (++depth_ > max_depth)
+                throw UnitSyntax(fmt::format("more than {} nested parentheses", max_depth));
             ++pos_;
             u = expr();
+            --depth_;
             if (pos_ >= s_.size() || s_[pos_] != ')') throw UnitSyntax("missing ')'");
             ++pos_;
         } else if (one_over()) {
