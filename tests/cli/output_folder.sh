@@ -39,17 +39,7 @@ mkdir -p "$foreign" && echo data >"$foreign/thesis.tex"
 expect 2 "holds no DryDEM run" -- run -o "$foreign" --overwrite "${quick[@]}"
 [[ -f "$foreign/thesis.tex" && ! -e "$foreign/log.txt" ]] || fail "the foreign folder was changed"
 
-# 3. Two runs in one folder: the second is refused while the first holds the lock.
-busy="$work/busy"
-mkdir -p "$busy"
-flock "$busy/.drydem.lock" sleep 20 &
-holder=$!
-sleep 0.5
-expect 2 "is in use by another drydem run" -- run -o "$busy" "${quick[@]}"
-expect 2 "is in use by another drydem run" -- run --resume "$old" --quiet --no-plots
-kill "$holder"; wait "$holder" 2>/dev/null
-
-# 4. A quote and a backslash in run.name: config.toml reads back, --resume and analyze work.
+# 3. A quote and a backslash in run.name: config.toml reads back, --resume and analyze work.
 quoted="$work/quoted"
 expect 1 "" -- run -o "$quoted" --set 'run.name="say \"hi\" \\ o"' "${quick[@]}"
 [[ -f "$quoted/checkpoint/state.bin" ]] || fail "no checkpoint at the start of the run"
@@ -57,6 +47,14 @@ expect 1 "no final thickness" -- run --resume "$quoted" --quiet --no-plots
 grep -q 'name = "say \\"hi\\" \\\\ o"' "$quoted/config.toml" || fail "run.name not escaped in config.toml"
 out=$("$drydem" analyze "$quoted" --no-voxels --no-plots --quiet -o "$work/quoted_analysis" 2>&1)
 grep -q "TOML syntax error" <<<"$out" && fail "analyze cannot read the run's config.toml: $out"
+
+# 4. Two runs in one folder: a new run and a resume are refused while another process holds the lock.
+flock "$quoted/.drydem.lock" sleep 20 &
+holder=$!
+sleep 0.5
+expect 2 "is in use by another drydem run" -- run -o "$quoted" --overwrite "${quick[@]}"
+expect 2 "is in use by another drydem run" -- run --resume "$quoted" --quiet --no-plots
+kill "$holder"; wait "$holder" 2>/dev/null
 
 # 5. numerics.stability_guard = "refuse" refusing at the start: summary.json says failed.
 refused="$work/refused"

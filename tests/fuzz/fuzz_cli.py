@@ -208,11 +208,13 @@ def particle_case(rng, work, idx):
     return args, ("refuse" if expect_refusal else "any")
 
 
-def cli_int_case(rng):
+def cli_int_case(rng, work, idx):
     option = rng.choice(["--seed", "--threads"])
-    value = rng.choice(["-1", "-5", "1e3", "18446744073709551615", "9223372036854775808", "1000",
-                        "abc", "1.5", "0x10", " 1", "+3", "99999999999999999999999"])
-    return ["run", option, value, "-o", "/nonexistent-never-created", "--no-plots"], "refuse"
+    # Only values no run may start with (a valid one would start a real run).
+    value = rng.choice(["-1", "-5", "1e3", "18446744073709551615", "9223372036854775808", "abc", "1.5",
+                        "0x10", " 1", "+3", "99999999999999999999999", "", "-0"] +
+                       (["1000", "1025", "4294967297"] if option == "--threads" else []))
+    return ["run", option, value, "-o", os.path.join(work, f"cli{idx}"), "--no-plots"], "refuse"
 
 
 # ------------------------------------------------------------------ checks of accepted output
@@ -267,7 +269,7 @@ def main():
     ap.add_argument("drydem")
     ap.add_argument("work")
     ap.add_argument("--seed", type=int, default=14)
-    ap.add_argument("--cases", type=int, default=700)
+    ap.add_argument("--cases", type=int, default=500)
     a = ap.parse_args()
     shutil.rmtree(a.work, ignore_errors=True)
     os.makedirs(a.work)
@@ -288,7 +290,7 @@ def main():
             args, expect = particle_case(rng, a.work, idx)
             cases.append(("particles", args, expect))
         else:
-            args, expect = cli_int_case(rng)
+            args, expect = cli_int_case(rng, a.work, idx)
             cases.append(("cli-int", args, expect))
 
     with ThreadPoolExecutor(max_workers=2) as pool:

@@ -177,7 +177,10 @@ std::string node_text(const toml::node& n) {
     std::ostringstream s;
     if (auto str = n.as_string()) s << '"' << str->get() << '"';
     else n.visit([&](auto&& v) { s << v; });
-    return s.str();
+    // Error messages only: a 60,000-character value is cut to its two ends.
+    std::string t = s.str();
+    if (t.size() > 120) t = fmt::format("{}...{} ({} characters)", t.substr(0, 60), t.substr(t.size() - 30), t.size());
+    return t;
 }
 
 double read_number(const toml::node& n, const Field& f) {
@@ -217,15 +220,15 @@ bool valid_utf8(std::string_view s) {
 }
 
 /// run.name names the default output folder (out/<name>-<time>) and the study's run folders, and
-/// is written back into config.toml: one line of valid UTF-8 without a path separator.
+/// is written back into config.toml: one line of valid UTF-8 without a path separator ('/').
 void check_name(const Field& f, const std::string& v, const std::string& text) {
     const bool control = std::any_of(v.begin(), v.end(), [](char ch) {
         return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f;
     });
-    if (v.empty() || v.size() > 200 || control || v.find_first_of("/\\") != std::string::npos ||
+    if (v.empty() || v.size() > 200 || control || v.find('/') != std::string::npos ||
         v == "." || v == ".." || !valid_utf8(v))
         throw InputError(fmt::format("config key '{}': {} is not allowed; allowed: 1 to 200 characters of "
-                                     "UTF-8 without control characters (newline, tab), '/' or '\\', "
+                                     "UTF-8 without control characters (newline, tab) or '/', "
                                      "not \".\" or \"..\" (it names the output folder)",
                                      f.key, text));
 }

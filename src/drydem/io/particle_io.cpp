@@ -453,6 +453,11 @@ void check_particle_geometry(const ParticleFile& f, double lx, double ly, const 
                 "{}: {} at x = {:.4g} um, y = {:.4g} um lies more than 10 box lengths outside the {:.4g} x {:.4g} um "
                 "box; wrong units in the file or the wrong box?",
                 file, who(r), r.position.x * 1e6, r.position.y * 1e6, lx * 1e6, ly * 1e6));
+        // A wet electrode film is below 1 mm; 1 cm above the substrate is a typo ("1.8" for 1.8e-5).
+        if (r.position.z - r.radius > 0.01)
+            throw InputError(fmt::format("{}: {} at z = {:.4g} m lies more than 1 cm above the substrate; no film "
+                                         "is that thick (wrong units or a damaged number?)",
+                                         file, who(r), r.position.z));
         if (r.position.z < 0.0)
             throw InputError(fmt::format("{}: {} has its centre below the substrate (z = {:.4g} um < 0)", file,
                                          who(r), r.position.z * 1e6));

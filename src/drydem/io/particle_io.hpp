@@ -44,7 +44,7 @@ struct ParticleFile {
 
 /// Refuses a particle file no film can be: a box that is not finite and positive, a sphere wider
 /// than half the periodic box, a centre below the substrate (z < 0) or a sphere sunk into it by
-/// more than half its radius, a position more than 10 box lengths outside the box, two particles
+/// more than half its radius, a position more than 10 box lengths outside the box or 1 cm above the substrate, two particles
 /// that coincide or overlap by more than the smaller radius (minimum image in x and y). The
 /// InputError names the file, the line(s) and the reason; `lx`, `ly` are the periodic box [m]
 /// (the file's where it has one, else the config's).

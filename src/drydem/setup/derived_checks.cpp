@@ -34,7 +34,7 @@ std::string bare_length_hints(const Config& c, const std::vector<std::string_vie
         const double v = c.*k.member;
         const bool cause = std::find(causes.begin(), causes.end(), k.key) != causes.end();
         const bool bare = std::find(bare_lengths.begin(), bare_lengths.end(), k.key) != bare_lengths.end();
-        if (cause && bare && v >= 1e-3)
+        if (cause && bare && v >= 1e-3 && v < 1e6) // read as um, a length a user may mean
             out += fmt::format("; {} = {:g} is a bare number, i.e. {:g} m (bare numbers are SI): did "
                                "you mean \"{:g} um\"?", k.key, v, v, v);
     }
