@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
     run->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
     run->add_option("-o,--output", out_dir, "output folder (default out/<name>-<timestamp>)");
     run->add_option("--set", sets, "override a key, e.g. --set run.seed=7")->take_all();
-    run->add_option("--seed", seed_text, "random seed 0..2^63-1 (= --set run.seed=N)");
-    run->add_option("--threads", threads_text, "OpenMP threads, 0 = all cores (= --set run.threads=N)");
+    auto* seed_opt = run->add_option("--seed", seed_text, "random seed 0..2^63-1 (= --set run.seed=N)");
+    auto* threads_opt = run->add_option("--threads", threads_text, "OpenMP threads, 0 = all cores (= --set run.threads=N)");
     run->add_flag("--overwrite", overwrite,
                   "replace the outputs of a previous run in the -o folder (default: refuse a folder "
                   "that holds a run)");
@@ -173,10 +173,11 @@ int main(int argc, char** argv) {
     }
     try {
         std::optional<std::uint64_t> seed, threads;
-        if (!seed_text.empty())
+        // count(), not empty(): `--threads ''` is a bad value, not a missing option.
+        if (seed_opt->count() > 0)
             seed = cli_integer("--seed", seed_text, std::numeric_limits<std::int64_t>::max(),
                                "an integer 0..9223372036854775807");
-        if (!threads_text.empty()) {
+        if (threads_opt->count() > 0) {
             threads = cli_integer("--threads", threads_text, 1024, "an integer 0..1024 (0 = all cores)");
             check_threads("--threads", long(*threads));
         }

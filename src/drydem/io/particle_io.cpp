@@ -254,13 +254,12 @@ void read_dump(LineReader& in, std::string first, ParticleFile& out) {
                 if (k < 2) {
                     cur.box[2 * k] = number(in, w[0], "lower bound");
                     cur.box[2 * k + 1] = number(in, w[1], "upper bound");
+                    // Inverted bounds give a negative volume (density < 0, porosity > 1 downstream).
+                    if (!(cur.box[2 * k + 1] > cur.box[2 * k]) || !std::isfinite(cur.box[2 * k + 1] - cur.box[2 * k]))
+                        in.fail(fmt::format("box bounds {} {} in {} are inverted or empty (need lo < hi)",
+                                            cur.box[2 * k], cur.box[2 * k + 1], "xy"[k]));
                 }
             }
-            // Inverted bounds give a negative volume (density < 0, porosity > 1 downstream).
-            for (int k = 0; k < 2; ++k)
-                if (!(cur.box[2 * k + 1] > cur.box[2 * k]) || !std::isfinite(cur.box[2 * k + 1] - cur.box[2 * k]))
-                    in.fail(fmt::format("box bounds {} {} in {} are inverted or empty (need lo < hi)",
-                                        cur.box[2 * k], cur.box[2 * k + 1], "xy"[k]));
             cur.have_box = true;
         } else if (item.starts_with("ATOMS")) {
             cur.columns.clear();
