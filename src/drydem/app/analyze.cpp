@@ -12,6 +12,7 @@
 #include <omp.h>
 #include <sys/resource.h>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 
 namespace drydem::app {
@@ -32,6 +33,7 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     if (o.threads > 0) omp_set_num_threads(o.threads);
     const ParticleFile file = read_particles(o.snapshot);
+    check_particle_geometry(file, file.lx.value_or(c.box_x), file.ly.value_or(c.box_y), o.snapshot);
     analysis::PhaseRule rule;
     if (o.cb_type > 0) rule.cb_type = o.cb_type;
     const analysis::Structure s = analysis::structure_from_file(file, c, rule);
@@ -47,6 +49,11 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
                        voxels * analysis::voxel_analysis_bytes / 1e9);
     }
     const analysis::AnalysisResult r = analysis::analyze_structure(s, a);
+    // Never an impossible number as a result (the file checks above should make this unreachable).
+    if (!(r.bulk.density > 0.0 && std::isfinite(r.bulk.density) && r.bulk.porosity >= 0.0 && r.bulk.porosity < 1.0))
+        throw InputError(fmt::format("{}: the particles give density {:.4g} g/cm3 and porosity {:.4g}, which no "
+                                     "film has; check the box and the particle sizes",
+                                     o.snapshot.string(), r.bulk.density * 1e-3, r.bulk.porosity));
     write_analysis(o.output_dir, r, a, o.snapshot.string());
     if (r.grid) {
         const VoxelExport e = write_voxel_image(o.output_dir, *r.grid, o.snapshot.string(), o.tiff);

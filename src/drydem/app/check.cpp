@@ -5,6 +5,7 @@
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/drying/stability_clusters.hpp"
+#include "drydem/setup/derived_checks.hpp"
 #include "drydem/integrate/timestep.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <fmt/format.h>
@@ -114,8 +115,12 @@ void print_check(const Config& c) {
                t_sim, s.process_time(t_sim), c.relaxation);
     fmt::print("  steps                     {:.3g} at the largest step (the guard may lower it)\n", steps);
     fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
-    fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers)\n",
-               r.particle_count() * (13 * 24.0 + 6 * 8 + 20 * 40) / 1e6 + 5);
+    const double memory = double(r.particle_count()) * bytes_per_particle + 5e6;
+    fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers){}\n", memory / 1e6,
+               memory > 0.8 * physical_memory_bytes() ? fmt::format("; more than 80 % of this machine's {:.3g} GB: "
+                                                                   "`drydem run` refuses it here",
+                                                                   physical_memory_bytes() / 1e9)
+                                                      : "");
     if (c.analysis_at_end && c.analysis_voxel_size > 0.0) {
         // docs/analysis.md: the voxel image up to the film top (the top
         // stands above the 2.4 g/cm3 estimate by up to one large particle).

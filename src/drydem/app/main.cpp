@@ -6,15 +6,21 @@
 #include "drydem/core/stop_request.hpp"
 #include "drydem/dryer/dryer_config.hpp"
 #include "drydem/drying/drying_run.hpp"
+#include "drydem/io/output_folder.hpp"
 #include "drydem/io/units.hpp"
+#include "drydem/setup/derived_checks.hpp"
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include "drydem/git_hash.hpp"
 #include <fmt/format.h>
+#include <charconv>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <limits>
+#include <omp.h>
+#include <optional>
 
 using namespace drydem;
 
@@ -31,6 +37,26 @@ std::string default_output_dir(const Config& c, std::string_view suffix = "") {
                        fmt::localtime(std::chrono::system_clock::to_time_t(now)));
 }
 
+/// A non-negative integer option given on the command line: digits only (no sign, fraction or
+/// exponent) and at most `hi`; CLI11 alone would take "-1" and clamp 2^64 - 1.
+std::uint64_t cli_integer(const std::string& option, const std::string& text, std::uint64_t hi,
+                          const std::string& allowed) {
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
+        ec != std::errc{} || end != text.data() + text.size() || v > hi)
+        throw InputError(fmt::format("{} {}: not allowed; allowed: {}", option, text, allowed));
+    return v;
+}
+
+/// More threads than cores only slow a DEM run down (each step waits for the slowest thread).
+void check_threads(const std::string& what, long threads) {
+    const int cores = omp_get_num_procs();
+    if (threads > cores)
+        throw InputError(fmt::format("{} = {}: this machine has {} cores; allowed 1..{} (0 = all cores)",
+                                     what, threads, cores, cores));
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -41,16 +67,19 @@ int main(int argc, char** argv) {
 
     std::string config_file, out_dir, particles, resume_dir;
     std::vector<std::string> sets;
-    std::int64_t seed = -1;
-    int threads = -1;
+    std::string seed_text, threads_text;
+    bool overwrite = false;
     bool quiet = false, no_plots = false, couple_dryer = false, table2 = false;
 
     auto* run = cli.add_subcommand("run", "run the drying simulation (no CONFIG: the paper's 20.1 mg/cm2 case)");
     run->add_option("config", config_file, "TOML configuration")->check(CLI::ExistingFile);
     run->add_option("-o,--output", out_dir, "output folder (default out/<name>-<timestamp>)");
     run->add_option("--set", sets, "override a key, e.g. --set run.seed=7")->take_all();
-    run->add_option("--seed", seed, "random seed (= --set run.seed=N)");
-    run->add_option("--threads", threads, "OpenMP threads (= --set run.threads=N)");
+    auto* seed_opt = run->add_option("--seed", seed_text, "random seed 0..2^63-1 (= --set run.seed=N)");
+    auto* threads_opt = run->add_option("--threads", threads_text, "OpenMP threads, 0 = all cores (= --set run.threads=N)");
+    run->add_flag("--overwrite", overwrite,
+                  "replace the outputs of a previous run in the -o folder (default: refuse a folder "
+                  "that holds a run)");
     run->add_option("--particles", particles, "start from these particles (CSV, LAMMPS data or dump)")
         ->check(CLI::ExistingFile);
     run->add_option("--resume", resume_dir,
@@ -143,8 +172,18 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     try {
-        if (seed >= 0 && resume_dir.empty()) sets.push_back(fmt::format("run.seed={}", seed));
-        if (threads >= 0 && resume_dir.empty()) sets.push_back(fmt::format("run.threads={}", threads));
+        std::optional<std::uint64_t> seed, threads;
+        // count(), not empty(): `--threads ''` is a bad value, not a missing option.
+        if (seed_opt->count() > 0)
+            seed = cli_integer("--seed", seed_text, std::numeric_limits<std::int64_t>::max(),
+                               "an integer 0..9223372036854775807");
+        if (threads_opt->count() > 0) {
+            threads = cli_integer("--threads", threads_text, 1024, "an integer 0..1024 (0 = all cores)");
+            check_threads("--threads", long(*threads));
+        }
+        for (const int n : {study_opt.threads, an.threads, bench_opt.threads}) check_threads("--threads", n);
+        if (seed && resume_dir.empty()) sets.push_back(fmt::format("run.seed={}", *seed));
+        if (threads && resume_dir.empty()) sets.push_back(fmt::format("run.threads={}", *threads));
         if (*config) {
             std::cout << default_config_toml();
             return 0;
@@ -218,19 +257,27 @@ int main(int argc, char** argv) {
         }
         if (!resume_dir.empty()) {
             if (!config_file.empty() || !sets.empty() || !particles.empty() || !out_dir.empty() ||
-                seed >= 0 || couple_dryer)
+                seed || couple_dryer || overwrite)
                 throw InputError("--resume DIR continues a run with the config stored in its "
-                                 "checkpoint; CONFIG, --set, --seed, --particles, -o and "
+                                 "checkpoint; CONFIG, --set, --seed, --particles, -o, --overwrite and "
                                  "--couple-dryer are not allowed with it (only --threads, --quiet, --no-plots)");
         }
         Config c = resume_dir.empty() ? load(config_file, sets) : resume_config(resume_dir);
-        if (!resume_dir.empty() && threads >= 0) c.threads = threads;
+        if (!resume_dir.empty() && threads) c.threads = int(*threads);
+        if (resume_dir.empty()) {
+            check_threads("config key 'run.threads'", c.threads);
+            check_fits_this_machine(c);
+        }
         // Ctrl-C / SIGTERM: finish the step, write the results so far, exit 1.
         std::signal(SIGINT, [](int sig) { request_stop(sig); });
         std::signal(SIGTERM, [](int sig) { request_stop(sig); });
         RunOptions o;
         o.output_dir = !resume_dir.empty() ? resume_dir : out_dir.empty() ? default_output_dir(c) : out_dir;
         o.resume = !resume_dir.empty();
+        // Never two runs in one folder, never a new run over an old one's files (old frames would
+        // mix with the new); a resumed run continues its own folder as it is.
+        const OutputLock lock(o.output_dir);
+        if (!o.resume) prepare_output_folder(o.output_dir, overwrite);
         if (!particles.empty()) o.particles_file = particles;
         o.quiet = quiet;
         o.plots = !no_plots;

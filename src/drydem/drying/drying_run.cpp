@@ -71,6 +71,9 @@ ParticleStore particles_from_file(const std::filesystem::path& file, const FilmR
             "{:.6g} x {:.6g} um; set film.box_x and film.box_y to the file's box",
             file.string(), in.lx.value_or(box.lx) * 1e6, in.ly.value_or(box.ly) * 1e6, box.lx * 1e6,
             box.ly * 1e6));
+    // Refused before step 1 with the line and the reason: coincident spheres or one below the
+    // substrate would otherwise blow up and be blamed on the time step or the forces.
+    check_particle_geometry(in, box.lx, box.ly, file);
     ParticleStore p;
     for (const ParticleRecord& r : in.particles) {
         if (r.type < 1 || r.type > int(recipe.species.size()))
@@ -265,7 +268,15 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
         return indicator;
     };
     // A resumed run must not re-run the guard here: the uninterrupted run only runs it at rebuilds.
-    if (!resumed) pr.dt_lambda = guard(true);
+    // "refuse" at the start fails the run like a refusal later on: summary.json says why.
+    std::optional<std::string> refused_at_start;
+    if (!resumed) {
+        try {
+            pr.dt_lambda = guard(true);
+        } catch (const InputError& e) {
+            refused_at_start = e.what();
+        }
+    }
     log->info("threads {}, integrator {}, dt = {:.3g} s (scaled, cap {:.3g} s), dt*lambda = {:.3g} "
               "(stable < 2), level speeds {} m/s (scaled)", sim.threads(), c.integrator,
               sim.settings().dt, time_step_cap, pr.dt_lambda,
@@ -358,11 +369,15 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     const std::int64_t step_session = sim.step_count();
     const double areal_mass = recipe.realised_dry_mass() / recipe.base_area;
     try {
+        if (refused_at_start) throw RunError(*refused_at_start);
         if (!resumed) {
             row();
             snapshot();
             pr.next_row = scaled.sim_time(c.timeseries_every);
             pr.next_snapshot = c.snapshot_every > 0 ? scaled.sim_time(c.snapshot_every) : INFINITY;
+            // A first checkpoint at once: a run killed before the first checkpoint_every (10 min
+            // by default) can still be resumed.
+            if (c.checkpoint_every > 0) write_checkpoint();
         }
         while (true) {
             sim.step();

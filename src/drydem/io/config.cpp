@@ -4,6 +4,7 @@
 #include "drydem/io/config.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/units.hpp"
+#include "drydem/setup/derived_checks.hpp"
 #include <fmt/format.h>
 #include <toml++/toml.h>
 #include <algorithm>
@@ -32,6 +33,7 @@ struct Field {
 };
 
 constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double max_density = 1e5; ///< [kg/m^3], 4x the densest element
 using D = Dimension;
 
 const std::vector<Field>& schema() {
@@ -51,18 +53,20 @@ const std::vector<Field>& schema() {
         {"formulation.ncm_diameters", &Config::ncm_diameters, D::length, 0, 1e-3, true},
         {"formulation.cb_diameter", &Config::cb_diameter, D::length, 0, 1e-3, true},
         {"formulation.cb_porosity", &Config::cb_porosity, D::dimensionless, 0, 0.99},
-        {"materials.ncm_density", &Config::ncm_density, D::density, 0, inf, true},
-        {"materials.cb_density", &Config::cb_density, D::density, 0, inf, true},
-        {"materials.pvdf_density", &Config::pvdf_density, D::density, 0, inf, true},
-        {"materials.solvent_density", &Config::solvent_density, D::density, 0, inf, true},
-        {"materials.viscosity", &Config::viscosity, D::viscosity, 0, inf},
-        {"materials.surface_tension", &Config::surface_tension, D::surface_tension, 0, inf},
+        // Upper bounds: beyond every real material (osmium 22.6 g/cm3, diamond 1.2 TPa, pitch
+        // 1e8 Pa s, mercury 0.49 N/m), so that no product of them leaves double precision.
+        {"materials.ncm_density", &Config::ncm_density, D::density, 0, max_density, true},
+        {"materials.cb_density", &Config::cb_density, D::density, 0, max_density, true},
+        {"materials.pvdf_density", &Config::pvdf_density, D::density, 0, max_density, true},
+        {"materials.solvent_density", &Config::solvent_density, D::density, 0, max_density, true},
+        {"materials.viscosity", &Config::viscosity, D::viscosity, 0, 1e9},
+        {"materials.surface_tension", &Config::surface_tension, D::surface_tension, 0, 10},
         {"materials.contact_angle", &Config::contact_angle, D::angle, 0, 3.14159265358979},
-        {"materials.ncm_youngs_modulus", &Config::ncm_youngs_modulus, D::pressure, 0, inf, true},
-        {"materials.cb_youngs_modulus", &Config::cb_youngs_modulus, D::pressure, 0, inf, true},
+        {"materials.ncm_youngs_modulus", &Config::ncm_youngs_modulus, D::pressure, 0, 1e13, true},
+        {"materials.cb_youngs_modulus", &Config::cb_youngs_modulus, D::pressure, 0, 1e13, true},
         {"materials.poisson_ratio", &Config::poisson_ratio, D::dimensionless, -1, 0.5},
         {"materials.substrate_youngs_modulus", &Config::substrate_youngs_modulus, D::pressure, 0,
-         inf, true},
+         1e13, true},
         {"materials.substrate_poisson_ratio", &Config::substrate_poisson_ratio, D::dimensionless,
          -1, 0.5},
         {"contact.friction", &Config::friction, D::dimensionless, 0, 10},
@@ -102,7 +106,7 @@ const std::vector<Field>& schema() {
         {"dryer.initial_film_temperature", &Config::dryer_initial_temperature, D::temperature,
          273.15, 480},
         {"dryer.substrate_thickness", &Config::dryer_substrate_thickness, D::length, 0, 1e-3},
-        {"dryer.substrate_density", &Config::dryer_substrate_density, D::density, 0, inf, true},
+        {"dryer.substrate_density", &Config::dryer_substrate_density, D::density, 0, max_density, true},
         {"dryer.substrate_heat_capacity", &Config::dryer_substrate_heat_capacity, D::specific_heat,
          0, inf, true},
         {"dryer.supply_air_solvent_mole_fraction", &Config::dryer_supply_air_solvent,
@@ -175,7 +179,10 @@ std::string node_text(const toml::node& n) {
     std::ostringstream s;
     if (auto str = n.as_string()) s << '"' << str->get() << '"';
     else n.visit([&](auto&& v) { s << v; });
-    return s.str();
+    // Error messages only: a 60,000-character value is cut to its two ends.
+    std::string t = s.str();
+    if (t.size() > 120) t = fmt::format("{}...{} ({} characters)", t.substr(0, 60), t.substr(t.size() - 30), t.size());
+    return t;
 }
 
 double read_number(const toml::node& n, const Field& f) {
@@ -195,7 +202,40 @@ void check_range(const Field& f, double v, const std::string& text) {
                                      dimension_name(f.dim)));
 }
 
-void assign(Config& c, const Field& f, const toml::node& n) {
+/// Well-formed UTF-8 (RFC 3629: no overlong forms, surrogates or code points above U+10FFFF).
+bool valid_utf8(std::string_view s) {
+    for (std::size_t i = 0; i < s.size();) {
+        const auto b = static_cast<unsigned char>(s[i]);
+        const int n = b < 0x80 ? 0 : (b >> 5) == 0x6 ? 1 : (b >> 4) == 0xe ? 2 : (b >> 3) == 0x1e ? 3 : -1;
+        if (n < 0 || i + std::size_t(n) >= s.size()) return false;
+        char32_t cp = n == 0 ? b : b & (0x3f >> n);
+        for (int k = 1; k <= n; ++k) {
+            const auto cont = static_cast<unsigned char>(s[i + std::size_t(k)]);
+            if ((cont >> 6) != 0x2) return false;
+            cp = (cp << 6) | (cont & 0x3f);
+        }
+        constexpr char32_t least[] = {0, 0x80, 0x800, 0x10000};
+        if (cp < least[n] || cp > 0x10ffff || (cp >= 0xd800 && cp <= 0xdfff)) return false;
+        i += std::size_t(n) + 1;
+    }
+    return true;
+}
+
+/// run.name names the default output folder (out/<name>-<time>) and the study's run folders, and
+/// is written back into config.toml: one line of valid UTF-8 without a path separator ('/').
+void check_name(const Field& f, const std::string& v, const std::string& text) {
+    const bool control = std::any_of(v.begin(), v.end(), [](char ch) {
+        return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f;
+    });
+    if (v.empty() || v.size() > 200 || control || v.find('/') != std::string::npos ||
+        v == "." || v == ".." || !valid_utf8(v))
+        throw InputError(fmt::format("config key '{}': {} is not allowed; allowed: 1 to 200 characters of "
+                                     "UTF-8 without control characters (newline, tab) or '/', "
+                                     "not \".\" or \"..\" (it names the output folder)",
+                                     f.key, text));
+}
+
+void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::string>& bare_lengths) {
     const std::string text = node_text(n);
     std::visit(
         [&](auto member) {
@@ -204,6 +244,7 @@ void assign(Config& c, const Field& f, const toml::node& n) {
                 const double v = read_number(n, f);
                 check_range(f, v, text);
                 c.*member = v;
+                if (f.dim == D::length && !n.is_string()) bare_lengths.emplace_back(f.key);
             } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::uint64_t>) {
                 auto v = n.as_integer();
                 if (!v) throw InputError(fmt::format("config key '{}': {} must be an integer", f.key, text));
@@ -223,6 +264,7 @@ void assign(Config& c, const Field& f, const toml::node& n) {
                     throw InputError(fmt::format("config key '{}': {} is not allowed; allowed: {}",
                                                  f.key, text, allowed));
                 }
+                if (f.key == "run.name") check_name(f, v->get(), text);
                 c.*member = v->get();
             } else {
                 auto arr = n.as_array();
@@ -240,11 +282,12 @@ void assign(Config& c, const Field& f, const toml::node& n) {
         f.member);
 }
 
-void walk(const toml::table& t, const std::string& prefix, Config& c) {
+void walk(const toml::table& t, const std::string& prefix, Config& c,
+          std::vector<std::string>& bare_lengths) {
     for (const auto& [k, node] : t) {
         const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
         if (auto sub = node.as_table()) {
-            walk(*sub, key, c);
+            walk(*sub, key, c, bare_lengths);
             continue;
         }
         const auto& fields = schema();
@@ -253,7 +296,7 @@ void walk(const toml::table& t, const std::string& prefix, Config& c) {
             throw InputError(fmt::format("unknown config key '{}' (value {}); did you mean '{}'? "
                                          "(`drydem config default` lists every key)",
                                          key, node_text(node), nearest_key(key)));
-        assign(c, *it, node);
+        assign(c, *it, node, bare_lengths);
     }
 }
 
@@ -273,12 +316,18 @@ void apply_override(toml::table& root, const std::string& spec) {
     const std::string leaf = key.substr(start);
     // The value is TOML when it parses as such (numbers, booleans, arrays, quoted strings),
     // otherwise a bare string such as 6.5um.
+    std::optional<toml::table> parsed;
     try {
-        toml::table v = toml::parse("v = " + value);
-        t->insert_or_assign(leaf, *v.get("v"));
+        parsed = toml::parse("v = " + value);
     } catch (const toml::parse_error&) {
         t->insert_or_assign(leaf, value);
+        return;
     }
+    // "1\nfoo=2" parses as two keys: the value must be exactly one TOML value, never more keys.
+    if (parsed->size() != 1)
+        throw InputError(fmt::format("--set '{}': the value defines further keys; give one value per --set "
+                                     "(no newlines)", spec));
+    t->insert_or_assign(leaf, *parsed->get("v"));
 }
 
 /// Cross-key rules of the [dryer] section (per-key ranges are in the schema).
@@ -320,7 +369,8 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
     }
     for (const std::string& o : overrides) apply_override(root, o);
     Config c;
-    walk(root, "", c);
+    std::vector<std::string> bare_lengths; // length keys given as bare numbers (SI metres)
+    walk(root, "", c, bare_lengths);
     const double mass_sum = c.ncm_mass_fraction + c.pvdf_mass_fraction + c.cb_mass_fraction;
     if (std::abs(mass_sum - 1.0) > 1e-6)
         throw InputError(fmt::format("config keys 'formulation.*_mass_fraction': NCM + PVDF + CB = "
@@ -350,6 +400,7 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
                                          "allowed: one per measured loading{}",
                                          key, values->size(), n_measured, optional ? " or none" : ""));
     check_dryer(c);
+    check_derived_quantities(c, bare_lengths);
     return c;
 }
 
@@ -362,31 +413,34 @@ Config load_config_file(const std::string& path, const std::vector<std::string>&
 }
 
 std::string to_toml(const Config& c) {
-    std::string out = "# Resolved DryDEM configuration, every value in SI units.\n";
-    std::string table;
+    // Through the TOML library, so that any string (quotes, backslashes, non-ASCII) is escaped
+    // and reads back; doubles are written with the shortest digits that read back bit-exact.
+    toml::table root;
     for (const Field& f : schema()) {
         const auto dot = f.key.find('.');
-        const std::string_view tab = f.key.substr(0, dot), leaf = f.key.substr(dot + 1);
-        if (tab != table) {
-            out += fmt::format("\n[{}]\n", tab);
-            table = std::string(tab);
-        }
+        const std::string tab(f.key.substr(0, dot)), leaf(f.key.substr(dot + 1));
+        if (!root.contains(tab)) root.insert(tab, toml::table{});
+        toml::table& t = *root[tab].as_table();
         std::visit(
             [&](auto member) {
                 using T = std::remove_cvref_t<decltype(c.*member)>;
                 const T& v = c.*member;
-                if constexpr (std::is_same_v<T, double>) out += fmt::format("{} = {:.17g}\n", leaf, v);
-                else if constexpr (std::is_same_v<T, bool>) out += fmt::format("{} = {}\n", leaf, v);
-                else if constexpr (std::is_same_v<T, std::string>) out += fmt::format("{} = \"{}\"\n", leaf, v);
-                else if constexpr (std::is_same_v<T, std::vector<double>>) {
-                    out += fmt::format("{} = [", leaf);
-                    for (std::size_t i = 0; i < v.size(); ++i) out += fmt::format("{}{:.17g}", i ? ", " : "", v[i]);
-                    out += "]\n";
-                } else out += fmt::format("{} = {}\n", leaf, v);
+                if constexpr (std::is_same_v<T, std::vector<double>>) {
+                    toml::array a;
+                    for (double x : v) a.push_back(x);
+                    t.insert(leaf, std::move(a));
+                } else if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, int>) {
+                    t.insert(leaf, std::int64_t(v)); // TOML integers are 64-bit signed (seed <= 2^63 - 1)
+                } else {
+                    t.insert(leaf, v);
+                }
             },
             f.member);
     }
-    return out;
+    std::ostringstream out;
+    out << "# Resolved DryDEM configuration, every value in SI units.\n"
+        << toml::toml_formatter(root, toml::format_flags::allow_unicode_strings) << "\n";
+    return out.str();
 }
 
 } // namespace drydem

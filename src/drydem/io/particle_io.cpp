@@ -10,7 +10,10 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <string_view>
+#include <unordered_map>
+#include <utility>
 #include <cctype>
 
 namespace drydem {
@@ -111,6 +114,7 @@ void add(const LineReader& in, ParticleFile& out, std::string_view id_text,
     r.radius = radius;
     r.density = density;
     r.position = x;
+    r.line = in.line_no();
     out.particles.push_back(r);
 }
 
@@ -166,7 +170,8 @@ void read_data(LineReader& in, ParticleFile& out) {
             natoms = n;
         } else if (w.size() == 4 && (w[2] == "xlo" || w[2] == "ylo")) {
             const double lo = number(in, w[0], w[2]), hi = number(in, w[1], w[3]);
-            if (!(hi > lo)) in.fail(fmt::format("box bounds {} {} are empty", lo, hi));
+            if (!(hi > lo) || !std::isfinite(hi - lo))
+                in.fail(fmt::format("box bounds {} {} are inverted or empty (need lo < hi)", lo, hi));
             (w[2] == "xlo" ? out.xlo : out.ylo) = lo;
             (w[2] == "xlo" ? out.lx : out.ly) = hi - lo;
         } else if (w.size() == 6 && w[3] == "xy") {
@@ -249,6 +254,10 @@ void read_dump(LineReader& in, std::string first, ParticleFile& out) {
                 if (k < 2) {
                     cur.box[2 * k] = number(in, w[0], "lower bound");
                     cur.box[2 * k + 1] = number(in, w[1], "upper bound");
+                    // Inverted bounds give a negative volume (density < 0, porosity > 1 downstream).
+                    if (!(cur.box[2 * k + 1] > cur.box[2 * k]) || !std::isfinite(cur.box[2 * k + 1] - cur.box[2 * k]))
+                        in.fail(fmt::format("box bounds {} {} in {} are inverted or empty (need lo < hi)",
+                                            cur.box[2 * k], cur.box[2 * k + 1], "xy"[k]));
                 }
             }
             cur.have_box = true;
@@ -323,6 +332,67 @@ void read_dump(LineReader& in, std::string first, ParticleFile& out) {
     out.format = "lammps dump";
 }
 
+/// "particle 7 (line 9)"
+std::string who(const ParticleRecord& r) { return fmt::format("particle {} (line {})", r.id, r.line); }
+
+/// The first pair of spheres that coincide or overlap by more than the smaller radius, i.e. the
+/// smaller one's centre lies inside the larger one: found from the larger one by searching its
+/// radius on a hashed cell grid of the median diameter (periodic in x and y).
+std::optional<std::pair<std::size_t, std::size_t>> gross_overlap(const ParticleFile& f, double lx, double ly) {
+    const auto& p = f.particles;
+    std::vector<double> radii(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) radii[i] = p[i].radius;
+    std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
+    const double h = 2.0 * radii[radii.size() / 2];
+    constexpr double max_cells = 1 << 20, max_layer = 1 << 22;
+    const long nx = std::max(1L, long(std::min(lx / h, max_cells)));
+    const long ny = std::max(1L, long(std::min(ly / h, max_cells)));
+    auto wrapped = [](double v, double l) { return v - l * std::floor(v / l); };
+    auto cell_of = [&](const Vec3& x) {
+        const long ix = std::min(nx - 1, long(wrapped(x.x, lx) / lx * double(nx)));
+        const long iy = std::min(ny - 1, long(wrapped(x.y, ly) / ly * double(ny)));
+        const long iz = long(std::clamp(std::floor(x.z / h), -max_layer, max_layer));
+        return std::array<long, 3>{ix, iy, iz};
+    };
+    auto key = [](long ix, long iy, long iz) {
+        return (std::uint64_t(iz + (1L << 22)) << 40) | (std::uint64_t(iy) << 20) | std::uint64_t(ix);
+    };
+    std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto c = cell_of(p[i].position);
+        cells[key(c[0], c[1], c[2])].push_back(i);
+    }
+    auto periodic = [](double d, double l) { return d - l * std::nearbyint(d / l); };
+    auto gross = [&](std::size_t i, std::size_t j) {
+        const double dx = periodic(p[j].position.x - p[i].position.x, lx);
+        const double dy = periodic(p[j].position.y - p[i].position.y, ly);
+        const double dz = p[j].position.z - p[i].position.z;
+        return j != i && std::sqrt(dx * dx + dy * dy + dz * dz) < std::max(p[i].radius, p[j].radius);
+    };
+    auto ordered = [](std::size_t i, std::size_t j) { return std::pair{std::min(i, j), std::max(i, j)}; };
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const auto c = cell_of(p[i].position);
+        const long k = long(std::min(std::ceil(p[i].radius / h), max_layer));
+        const long wx = std::min(2 * k + 1, nx), wy = std::min(2 * k + 1, ny);
+        if (double(wx) * double(wy) * double(2 * k + 1) > double(cells.size())) {
+            for (const auto& [unused, members] : cells) // fewer occupied cells than the search box
+                for (std::size_t j : members)
+                    if (gross(i, j)) return ordered(i, j);
+            continue;
+        }
+        for (long dx = 0; dx < wx; ++dx)
+            for (long dy = 0; dy < wy; ++dy)
+                for (long iz = c[2] - k; iz <= c[2] + k; ++iz) {
+                    const long ix = ((c[0] - k + dx) % nx + nx) % nx, iy = ((c[1] - k + dy) % ny + ny) % ny;
+                    const auto it = cells.find(key(ix, iy, iz));
+                    if (it == cells.end()) continue;
+                    for (std::size_t j : it->second)
+                        if (gross(i, j)) return ordered(i, j);
+                }
+    }
+    return std::nullopt;
+}
+
 bool looks_like_csv_header(std::string_view line) {
     const auto f = csv_fields(line);
     return f.size() >= 5 && std::find(f.begin(), f.end(), "id") != f.end();
@@ -362,6 +432,50 @@ ParticleFile read_particles(const fs::path& file) {
         throw InputError(fmt::format("{}: particle id {} occurs more than once", file.string(),
                                      *dup));
     return out;
+}
+
+void check_particle_geometry(const ParticleFile& f, double lx, double ly, const fs::path& name) {
+    const std::string file = name.string();
+    if (!(lx > 0.0 && ly > 0.0 && std::isfinite(lx) && std::isfinite(ly)))
+        throw InputError(fmt::format("{}: the periodic box {:g} x {:g} m is not finite and positive", file, lx, ly));
+    const double xlo = f.xlo.value_or(0.0), ylo = f.ylo.value_or(0.0);
+    for (const ParticleRecord& r : f.particles) {
+        if (2.0 * r.radius > 0.5 * std::min(lx, ly))
+            throw InputError(fmt::format(
+                "{}: {} has radius {:.4g} um, too large for the {:.4g} x {:.4g} um periodic box (its diameter "
+                "must be below half the smaller side); wrong units in the file or the wrong box?",
+                file, who(r), r.radius * 1e6, lx * 1e6, ly * 1e6));
+        const double out_x = std::max(xlo - r.position.x, r.position.x - (xlo + lx)) / lx;
+        const double out_y = std::max(ylo - r.position.y, r.position.y - (ylo + ly)) / ly;
+        if (out_x > 10.0 || out_y > 10.0)
+            throw InputError(fmt::format(
+                "{}: {} at x = {:.4g} um, y = {:.4g} um lies more than 10 box lengths outside the {:.4g} x {:.4g} um "
+                "box; wrong units in the file or the wrong box?",
+                file, who(r), r.position.x * 1e6, r.position.y * 1e6, lx * 1e6, ly * 1e6));
+        // A wet electrode film is below 1 mm; 1 cm above the substrate is a typo ("1.8" for 1.8e-5).
+        if (r.position.z - r.radius > 0.01)
+            throw InputError(fmt::format("{}: {} at z = {:.4g} m lies more than 1 cm above the substrate; no film "
+                                         "is that thick (wrong units or a damaged number?)",
+                                         file, who(r), r.position.z));
+        if (r.position.z < 0.0)
+            throw InputError(fmt::format("{}: {} has its centre below the substrate (z = {:.4g} um < 0)", file,
+                                         who(r), r.position.z * 1e6));
+        if (r.position.z < 0.5 * r.radius)
+            throw InputError(fmt::format(
+                "{}: {} (radius {:.4g} um, z = {:.4g} um) is sunk into the substrate by more than half its radius",
+                file, who(r), r.radius * 1e6, r.position.z * 1e6));
+    }
+    if (const auto pair = gross_overlap(f, lx, ly)) {
+        const ParticleRecord &a = f.particles[pair->first], &b = f.particles[pair->second];
+        const double dist = std::sqrt(std::pow(std::remainder(b.position.x - a.position.x, lx), 2) +
+                                      std::pow(std::remainder(b.position.y - a.position.y, ly), 2) +
+                                      std::pow(b.position.z - a.position.z, 2));
+        throw InputError(fmt::format(
+            "{}: {} and {} {} (centres {:.4g} um apart, radii {:.4g} and {:.4g} um): an overlap larger than the "
+            "smaller radius is no packing",
+            file, who(a), who(b), dist < 1e-6 * std::min(a.radius, b.radius) ? "coincide" : "overlap grossly",
+            dist * 1e6, a.radius * 1e6, b.radius * 1e6));
+    }
 }
 
 void write_file_atomically(const fs::path& file,

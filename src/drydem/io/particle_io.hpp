@@ -21,6 +21,7 @@ struct ParticleRecord {
     double radius = 0.0;  ///< [m]
     double density = 0.0; ///< [kg/m^3]; NaN when the file has none (caller fills it per species)
     Vec3 position;        ///< [m], as in the file (not wrapped into the box)
+    std::size_t line = 0; ///< line of the file it was read from (error messages)
 };
 
 struct ParticleFile {
@@ -40,6 +41,15 @@ struct ParticleFile {
 /// Ids must be unique. Throws InputError naming the file and line for anything else (also for
 /// gzip files: gunzip them first).
 [[nodiscard]] ParticleFile read_particles(const std::filesystem::path& file);
+
+/// Refuses a particle file no film can be: a box that is not finite and positive, a sphere wider
+/// than half the periodic box, a centre below the substrate (z < 0) or a sphere sunk into it by
+/// more than half its radius, a position more than 10 box lengths outside the box or 1 cm above the substrate, two particles
+/// that coincide or overlap by more than the smaller radius (minimum image in x and y). The
+/// InputError names the file, the line(s) and the reason; `lx`, `ly` are the periodic box [m]
+/// (the file's where it has one, else the config's).
+void check_particle_geometry(const ParticleFile& file, double lx, double ly,
+                             const std::filesystem::path& name);
 
 /// Writes `id,type,radius_m,density_kg_m3,x_m,y_m,z_m` sorted by id, type = species + 1, with the
 /// shortest digits that read back bit-exact. Atomic (temporary file + rename). RunError on failure.

@@ -140,6 +140,12 @@ std::string_view trim(std::string_view s) {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
+/// A value as error messages show it: a 60,000-character value is cut to its two ends.
+std::string shorten(std::string_view s) {
+    if (s.size() <= 80) return std::string(s);
+    return fmt::format("{}...{} ({} characters)", s.substr(0, 40), s.substr(s.size() - 20), s.size());
+}
+
 // Raises a unit to an integer power exactly (num and den are small integers or pi).
 Unit power(Unit u, int e) {
     if (e < 0) {
@@ -153,6 +159,12 @@ Unit power(Unit u, int e) {
         r.num *= u.num;
         r.den *= u.den;
     }
+    // Nested powers ("((m^9)^9)^9") would overflow the int exponents: no real unit goes near.
+    constexpr long max_dim = 64, max_pow10 = 100000;
+    auto too_big = [&](long v, long limit) { return v * e > limit || v * e < -limit; };
+    if (too_big(u.pow10, max_pow10) ||
+        std::any_of(u.dims.begin(), u.dims.end(), [&](int d) { return too_big(d, max_dim); }))
+        throw UnitSyntax("the unit's exponents are too large");
     r.pow10 = u.pow10 * e;
     for (std::size_t k = 0; k < r.dims.size(); ++k) r.dims[k] = u.dims[k] * e;
     return r;
@@ -193,7 +205,7 @@ public:
     Unit parse() {
         Unit u = expr();
         skip_ws();
-        if (pos_ != s_.size()) throw UnitSyntax(fmt::format("unexpected '{}'", s_.substr(pos_)));
+        if (pos_ != s_.size()) throw UnitSyntax(fmt::format("unexpected '{}'", shorten(s_.substr(pos_))));
         // degC is an offset scale: "80 degC" is fine, "J/degC" or "degC^2" would be meaningless.
         if (u.celsius && (factors_ != 1 || u.dims != K))
             throw UnitSyntax("degC is an offset scale and only allowed alone (\"80 degC\"); use K "
@@ -205,6 +217,8 @@ private:
     std::string_view s_;
     std::size_t pos_ = 0;
     int factors_ = 0;
+    int depth_ = 0; ///< open parentheses: the recursion is bounded, never a stack overflow
+    static constexpr int max_depth = 16;
 
     bool at(std::string_view t) const { return s_.substr(pos_).starts_with(t); }
     void skip_ws() {
@@ -243,7 +257,7 @@ private:
                 ++pos_;
                 divide = true;
             } else if (!at_factor_start()) {
-                throw UnitSyntax(fmt::format("unexpected '{}'", s_.substr(pos_)));
+                throw UnitSyntax(fmt::format("unexpected '{}'", shorten(s_.substr(pos_))));
             } // else: space-separated factors multiply ("Pa s")
             skip_ws();
             const Unit f = factor();
@@ -254,8 +268,11 @@ private:
     Unit factor() {
         Unit u;
         if (pos_ < s_.size() && s_[pos_] == '(') {
+            if (++depth_ > max_depth)
+                throw UnitSyntax(fmt::format("more than {} nested parentheses", max_depth));
             ++pos_;
             u = expr();
+            --depth_;
             if (pos_ >= s_.size() || s_[pos_] != ')') throw UnitSyntax("missing ')'");
             ++pos_;
         } else if (one_over()) {
@@ -265,7 +282,7 @@ private:
             while (symbol_char()) ++pos_;
             if (b == pos_)
                 throw UnitSyntax(pos_ < s_.size()
-                                     ? fmt::format("unexpected '{}'", s_.substr(pos_))
+                                     ? fmt::format("unexpected '{}'", shorten(s_.substr(pos_)))
                                      : std::string("a unit is missing at the end"));
             const auto name = s_.substr(b, pos_ - b);
             const auto found = lookup(name);
@@ -409,19 +426,20 @@ std::string_view dimension_name(Dimension d) {
 }
 
 double parse_quantity(std::string_view text, Dimension expected, std::string_view key) {
+    const std::string shown = shorten(text);
     const auto value = trim(text);
     const auto where = key.empty() ? std::string("value") : fmt::format("config key '{}'", key);
     const auto number = scan_number(value);
     if (!number)
         throw InputError(fmt::format("{}: \"{}\" is not a number with an optional unit ({})", where,
-                                     text, example(expected, std::nullopt)));
+                                     shown, example(expected, std::nullopt)));
     const auto unit_text = trim(value.substr(number->length));
     Unit u;
     if (!unit_text.empty()) {
         try {
             u = UnitParser(unit_text).parse();
         } catch (const UnitSyntax& e) {
-            throw InputError(fmt::format("{}: \"{}\": {} ({})", where, text, e.what(),
+            throw InputError(fmt::format("{}: \"{}\": {} ({})", where, shown, e.what(),
                                          example(expected, number)));
         }
     } else {
@@ -429,13 +447,13 @@ double parse_quantity(std::string_view text, Dimension expected, std::string_vie
     }
     if (u.dims != kExpected[index(expected)])
         throw InputError(fmt::format("{}: \"{}\" has unit {} ({}) but {} is expected ({})", where,
-                                     text, unit_text, describe(u.dims),
+                                     shown, shorten(unit_text), describe(u.dims),
                                      with_article(dimension_name(expected)),
                                      example(expected, number)));
     auto v = to_double(*number, u.pow10);
     if (!v)
         throw InputError(fmt::format("{}: \"{}\" is out of the range of double precision", where,
-                                     text));
+                                     shown));
     if (u.num != 1.0 || u.den != 1.0) *v = *v * u.num / u.den;
     if (u.celsius) *v += 273.15;
     return *v;

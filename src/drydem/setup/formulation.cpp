@@ -10,6 +10,12 @@ namespace drydem {
 
 namespace {
 double sphere_volume(double d) { return std::numbers::pi * d * d * d / 6.0; }
+
+/// C-3 rounding without overflow: a count beyond 2^58 (or NaN) is left at 0 here and refused by
+/// check_derived_quantities() with the keys that caused it.
+std::int64_t rounded_count(double exact) {
+    return std::isfinite(exact) && exact >= 0.0 && exact < 0x1p58 ? std::llround(exact) : 0;
+}
 } // namespace
 
 FilmRecipe make_recipe(const Config& c) {
@@ -31,7 +37,7 @@ FilmRecipe make_recipe(const Config& c) {
         s.diameter = d;
         s.density = c.ncm_density;
         s.count_exact = per_class / sphere_volume(d);
-        s.count = int(std::lround(s.count_exact));
+        s.count = rounded_count(s.count_exact);
         r.species.push_back(s);
     }
     // M-1.3: CB count from the agglomerate envelope volume, density carbon + pore NMP.
@@ -43,7 +49,7 @@ FilmRecipe make_recipe(const Config& c) {
     cb.diameter = c.cb_diameter;
     cb.density = r.cb_effective_density;
     cb.count_exact = r.cb_envelope_volume / sphere_volume(c.cb_diameter);
-    cb.count = int(std::lround(cb.count_exact));
+    cb.count = rounded_count(cb.count_exact);
     cb.is_cb = true;
     r.species.push_back(cb);
     r.pvdf_mass = c.pvdf_mass_fraction * r.dry_mass;
@@ -58,8 +64,8 @@ FilmRecipe make_recipe(const Config& c) {
     return r;
 }
 
-int FilmRecipe::particle_count() const {
-    int n = 0;
+std::int64_t FilmRecipe::particle_count() const {
+    std::int64_t n = 0;
     for (const SizeClass& s : species) n += s.count;
     return n;
 }

@@ -3,6 +3,7 @@
 // (paper Eq. 3-4; model.md M-1).
 #pragma once
 #include "drydem/io/config.hpp"
+#include <cstdint>
 #include <vector>
 
 namespace drydem {
@@ -12,7 +13,7 @@ struct SizeClass {
     double diameter = 0.0;     ///< [m]
     double density = 0.0;      ///< particle density [kg/m^3]
     double count_exact = 0.0;  ///< unrounded count
-    int count = 0;             ///< rounded count (C-3)
+    std::int64_t count = 0;    ///< rounded count (C-3); 0 where count_exact is not finite
     bool is_cb = false;
 };
 
@@ -30,7 +31,7 @@ struct FilmRecipe {
     std::vector<SizeClass> species;
 
     [[nodiscard]] int cb_species() const { return int(species.size()) - 1; }
-    [[nodiscard]] int particle_count() const;
+    [[nodiscard]] std::int64_t particle_count() const;
     [[nodiscard]] double largest_diameter() const;
     /// Realised dry mass (C-3): inserted NCM + CB carbon + nominal PVDF [kg].
     [[nodiscard]] double realised_dry_mass() const;

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/io/output_folder.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <sys/file.h>
+#include <unistd.h>
+#include <vector>
+
+namespace drydem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A run's own entry: a known output, a coupled run's iter_N folder, or an atomic write's .tmp.
+bool is_run_output(const std::string& name) {
+    const auto& known = run_output_names();
+    if (std::find(known.begin(), known.end(), name) != known.end()) return true;
+    if (name.starts_with("iter_") && name.size() > 5 &&
+        name.find_first_not_of("0123456789", 5) == std::string::npos)
+        return true;
+    return name.ends_with(".tmp") && is_run_output(name.substr(0, name.size() - 4));
+}
+
+/// A folder DryDEM wrote: a run's log beside its config (or a coupled run's coupling.json).
+bool holds_a_run(const fs::path& dir) {
+    return fs::exists(dir / "log.txt") &&
+           (fs::exists(dir / "config.toml") || fs::exists(dir / "coupling.json"));
+}
+
+std::string listing(const std::vector<std::string>& names) {
+    std::string out;
+    for (std::size_t k = 0; k < names.size() && k < 5; ++k) out += fmt::format("{}{}", k ? ", " : "", names[k]);
+    if (names.size() > 5) out += fmt::format(" and {} more", names.size() - 5);
+    return out;
+}
+
+} // namespace
+
+const std::vector<std::string>& run_output_names() {
+    static const std::vector<std::string> names = {
+        "config.toml", "log.txt",  "summary.json", "timeseries.csv", "initial.csv", "final.csv",
+        "snapshots",   "checkpoint", "analysis",   "plots",          "coupling.json"};
+    return names;
+}
+
+void prepare_output_folder(const fs::path& dir, bool overwrite) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw InputError(fmt::format("output folder {}: exists and is not a folder", dir.string()));
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(fmt::format("output folder {}: cannot create it: {}", dir.string(), ec.message()));
+    std::vector<std::string> ours, foreign;
+    for (const auto& e : fs::directory_iterator(dir)) {
+        const std::string name = e.path().filename().string();
+        if (name == output_lock_name) continue;
+        (is_run_output(name) ? ours : foreign).push_back(name);
+    }
+    if (ours.empty() && foreign.empty()) return;
+    std::sort(ours.begin(), ours.end());
+    std::sort(foreign.begin(), foreign.end());
+    if (!holds_a_run(dir))
+        throw InputError(fmt::format(
+            "output folder {} is not empty ({}) and holds no DryDEM run; choose a new or empty folder "
+            "with -o (it is not cleared, not even with --overwrite)",
+            dir.string(), listing(foreign.empty() ? ours : foreign)));
+    if (!overwrite)
+        throw InputError(fmt::format(
+            "output folder {} holds a previous run ({}); choose another folder with -o, continue "
+            "that run with `drydem run --resume {}`, or replace its outputs with --overwrite",
+            dir.string(), listing(ours), dir.string()));
+    // --overwrite: remove what the old run wrote (old frames would mix with the new ones); the
+    // user's own files stay.
+    for (const std::string& name : ours) {
+        fs::remove_all(dir / name, ec);
+        if (ec)
+            throw InputError(fmt::format("--overwrite: cannot remove {}: {}", (dir / name).string(), ec.message()));
+    }
+}
+
+OutputLock::OutputLock(const fs::path& dir) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw InputError(fmt::format("output folder {}: exists and is not a folder", dir.string()));
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(fmt::format("output folder {}: cannot create it: {}", dir.string(), ec.message()));
+    const fs::path file = dir / output_lock_name;
+    fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0)
+        throw InputError(fmt::format("output folder {}: cannot create the lock file {}: {}", dir.string(),
+                                     file.string(), std::strerror(errno)));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        std::string holder;
+        std::ifstream(file) >> holder;
+        ::close(fd_);
+        fd_ = -1;
+        throw InputError(fmt::format("output folder {} is in use by another drydem run{}; two runs cannot "
+                                     "write into one folder (choose another -o)",
+                                     dir.string(), holder.empty() ? "" : fmt::format(" (process {})", holder)));
+    }
+    // Who holds it, for the message above; the lock itself is the flock, not this text.
+    const std::string pid = fmt::format("{}\n", ::getpid());
+    if (::ftruncate(fd_, 0) != 0 || ::write(fd_, pid.data(), pid.size()) < 0) {
+        // Only the message of a second run loses the process id; the lock holds.
+    }
+}
+
+OutputLock::~OutputLock() {
+    if (fd_ >= 0) ::close(fd_); // releases the flock
+}
+
+} // namespace drydem

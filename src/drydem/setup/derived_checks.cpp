@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/setup/derived_checks.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/drying/scaling.hpp"
+#include "drydem/setup/formulation.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <unistd.h>
+
+namespace drydem {
+
+namespace {
+
+bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
+
+/// Scalar length keys that may appear among the causes of a refusal, for the bare-number hint.
+struct LengthKey {
+    std::string_view key;
+    double Config::*member;
+};
+constexpr LengthKey kLengthKeys[] = {
+    {"film.box_x", &Config::box_x},       {"film.box_y", &Config::box_y},
+    {"formulation.cb_diameter", &Config::cb_diameter}, {"dryer.zone_length", &Config::zone_length},
+    {"drying.final_gap", &Config::final_gap},
+};
+
+/// "; film.box_x = 40 is a bare number, i.e. 40 m (bare numbers are SI); did you mean "40 um"?"
+/// for every cause given as a bare number of a millimetre or more (a DEM film is micrometres).
+std::string bare_length_hints(const Config& c, const std::vector<std::string_view>& causes,
+                              const std::vector<std::string>& bare_lengths) {
+    std::string out;
+    for (const LengthKey& k : kLengthKeys) {
+        const double v = c.*k.member;
+        const bool cause = std::find(causes.begin(), causes.end(), k.key) != causes.end();
+        const bool bare = std::find(bare_lengths.begin(), bare_lengths.end(), k.key) != bare_lengths.end();
+        if (cause && bare && v >= 1e-3 && v < 1e6) // read as um, a length a user may mean
+            out += fmt::format("; {} = {:g} is a bare number, i.e. {:g} m (bare numbers are SI): did "
+                               "you mean \"{:g} um\"?", k.key, v, v, v);
+    }
+    return out;
+}
+
+[[noreturn]] void refuse(const Config& c, const std::string& what,
+                         const std::vector<std::string_view>& causes,
+                         const std::vector<std::string>& bare_lengths) {
+    std::string keys;
+    for (std::string_view k : causes) keys += fmt::format("{}{}", keys.empty() ? "" : ", ", k);
+    throw InputError(fmt::format("{} (set by {}){}", what, keys, bare_length_hints(c, causes, bare_lengths)));
+}
+
+/// Simulated time until the level is a largest diameter above the film of an uncalendered
+/// ~2.4 g/cm3 coating, plus the relaxation window (the cost estimate of `drydem check`, M-8.3).
+double estimated_sim_time(const Config& c, const FilmRecipe& r, const ScaledParameters& s) {
+    const double gap = c.final_gap > 0 ? c.final_gap : r.largest_diameter();
+    const double h_final = c.areal_loading / 2400.0;
+    double left = std::max(0.0, r.wet_film_height - h_final + gap), t = 0.0;
+    for (std::size_t z = 0; z < s.level_speeds_scaled.size() && left > 0; ++z) {
+        const bool last = z + 1 == s.level_speeds_scaled.size();
+        const double dz = last ? left : std::min(left, s.level_speeds_scaled[z] * s.zone_duration_scaled);
+        t += dz / s.level_speeds_scaled[z];
+        left -= dz;
+    }
+    return t + s.sim_time(c.relaxation);
+}
+
+} // namespace
+
+DerivedQuantities derived_quantities(const Config& c) {
+    DerivedQuantities d;
+    const FilmRecipe r = make_recipe(c);
+    const ScaledParameters s = scale_parameters(c);
+    for (const SizeClass& sc : r.species) d.particles += sc.count_exact;
+    d.wet_film_height = r.wet_film_height;
+    d.solids_density = r.solids_density;
+    d.sim_time = estimated_sim_time(c, r, s);
+    d.steps = d.sim_time / c.time_step;
+    d.memory_bytes = d.particles * bytes_per_particle + 5e6;
+    for (double len : c.dryer_zone_lengths) d.dryer_steps += std::ceil(len / c.line_speed / c.dryer_time_step);
+    return d;
+}
+
+void check_derived_quantities(const Config& c, const std::vector<std::string>& bare) {
+    // Film (M-1): the wet height and the particles the loading puts into the box.
+    const std::vector<std::string_view> film_keys = {
+        "film.areal_loading", "film.solids_mass_fraction", "materials.ncm_density",
+        "materials.pvdf_density", "materials.cb_density", "materials.solvent_density"};
+    const FilmRecipe r = make_recipe(c);
+    if (!positive_finite(r.wet_film_height) || r.wet_film_height > max_wet_film_height)
+        refuse(c, fmt::format("the wet film height (Eq. 3) is {:g} m; allowed (0, {:g} m]",
+                              r.wet_film_height, max_wet_film_height), film_keys, bare);
+    double total = 0.0;
+    for (const SizeClass& sc : r.species) {
+        if (!(std::isfinite(sc.count_exact) && sc.count_exact <= max_particles)) {
+            const std::vector<std::string_view> causes =
+                sc.is_cb ? std::vector<std::string_view>{"formulation.cb_diameter", "formulation.cb_mass_fraction",
+                                                         "formulation.cb_porosity", "film.areal_loading",
+                                                         "film.box_x", "film.box_y"}
+                         : std::vector<std::string_view>{"formulation.ncm_diameters", "formulation.ncm_mass_fraction",
+                                                         "film.areal_loading", "film.box_x", "film.box_y"};
+            refuse(c, fmt::format("the film would hold {:.3g} {} particles of {:.4g} um in a {:.4g} x {:.4g} um box; "
+                                  "allowed at most {:g} particles in all",
+                                  sc.count_exact, sc.is_cb ? "CB" : "NCM", sc.diameter * 1e6, c.box_x * 1e6,
+                                  c.box_y * 1e6, max_particles),
+                   causes, bare);
+        }
+        total += sc.count_exact;
+    }
+    if (total > max_particles)
+        refuse(c, fmt::format("the film would hold {:.3g} particles in a {:.4g} x {:.4g} um box; allowed at most {:g}",
+                              total, c.box_x * 1e6, c.box_y * 1e6, max_particles),
+               {"film.areal_loading", "film.box_x", "film.box_y", "formulation.ncm_diameters",
+                "formulation.cb_diameter"}, bare);
+    if (r.particle_count() == 0)
+        refuse(c, fmt::format("the film has no particles: {:.3g} mg/cm2 on a {:.4g} x {:.4g} um base round to 0 NCM "
+                              "and 0 CB particles ({:.3g} unrounded); raise film.areal_loading or the box, or "
+                              "the NCM or CB mass fraction",
+                              c.areal_loading * 100, c.box_x * 1e6, c.box_y * 1e6, total),
+               {"film.areal_loading", "film.box_x", "film.box_y", "formulation.ncm_mass_fraction",
+                "formulation.cb_mass_fraction"}, bare);
+
+    // Scaling (M-7): every scaled value finite, the level moving and the zones lasting.
+    const ScaledParameters s = scale_parameters(c);
+    for (double v : s.level_speeds_scaled)
+        if (!positive_finite(v))
+            refuse(c, fmt::format("the scaled liquid-level speed is {:g} m/s; it must be finite and positive", v),
+                   {"dryer.shrinkage_rates", "scaling.time_factor"}, bare);
+    if (!positive_finite(s.zone_duration_scaled))
+        refuse(c, fmt::format("the scaled dryer zone duration is {:g} s; it must be finite and positive",
+                              s.zone_duration_scaled),
+               {"dryer.zone_length", "dryer.line_speed", "scaling.time_factor"}, bare);
+    if (!std::isfinite(s.gravity_scaled))
+        refuse(c, fmt::format("the scaled gravity is {:g} m/s2; it must be finite", s.gravity_scaled),
+               {"scaling.gravity", "scaling.time_factor", "scaling.viscosity_reduction"}, bare);
+    if (!std::isfinite(s.hamaker_ncm_ncm[1]) || !std::isfinite(s.hamaker_ncm_cb[1]) || !std::isfinite(s.hamaker_cb_cb[1]))
+        refuse(c, "a scaled Hamaker constant is not finite", {"scaling.hamaker_factor"}, bare);
+    if (!std::isfinite(s.surface_tension_scaled))
+        refuse(c, fmt::format("the scaled surface tension is {:g} N/m; it must be finite", s.surface_tension_scaled),
+               {"materials.surface_tension", "scaling.capillary_factor"}, bare);
+
+    // Steps (M-8.3) and the end criterion's window.
+    if (!(c.relaxation < c.max_process_time))
+        refuse(c, fmt::format("drying.relaxation = {:g} s is not shorter than run.max_process_time = {:g} s: the run "
+                              "would stop before its relaxation window ends", c.relaxation, c.max_process_time),
+               {"drying.relaxation", "run.max_process_time"}, bare);
+    const double steps = estimated_sim_time(c, r, s) / c.time_step;
+    if (!positive_finite(steps) || steps > max_steps)
+        refuse(c, fmt::format("the run would take about {:.3g} steps of {:g} s; allowed at most {:g}",
+                              steps, c.time_step, max_steps),
+               {"run.time_step", "scaling.time_factor", "drying.relaxation", "dryer.shrinkage_rates",
+                "film.areal_loading"}, bare);
+
+    // The dryer model (D-2.7): its RK4 steps over all zones, each kept as a sample.
+    double dryer_steps = 0.0;
+    for (double len : c.dryer_zone_lengths) dryer_steps += std::ceil(len / c.line_speed / c.dryer_time_step);
+    if (!positive_finite(dryer_steps) || dryer_steps > max_dryer_steps)
+        refuse(c, fmt::format("the dryer model would take {:.3g} steps of {:g} s for {:g} m/s through the zones; "
+                              "allowed at most {:g}",
+                              dryer_steps, c.dryer_time_step, c.line_speed, max_dryer_steps),
+               {"dryer.time_step", "dryer.line_speed", "dryer.zone_lengths"}, bare);
+}
+
+double physical_memory_bytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
+}
+
+void check_fits_this_machine(const Config& c) {
+    const DerivedQuantities d = derived_quantities(c);
+    const double have = physical_memory_bytes();
+    if (have > 0.0 && d.memory_bytes > 0.8 * have)
+        throw InputError(fmt::format(
+            "the film's {:.3g} particles need about {:.3g} GB, more than 80 % of this machine's {:.3g} GB "
+            "(film.areal_loading, film.box_x, film.box_y, formulation.cb_diameter); make the box smaller",
+            d.particles, d.memory_bytes / 1e9, have / 1e9));
+}
+
+} // namespace drydem

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// The quantities a configuration implies (particle counts, wet height, scaled parameters, steps,
+// memory, the dryer model's step count) checked before anything runs: every key may be in range
+// and still give 1e20 particles (a bare `box_x = 40` is 40 m) or 1e300 steps. Each refusal names
+// the keys that caused it.
+#pragma once
+#include "drydem/io/config.hpp"
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace drydem {
+
+/// Upper limits of what DryDEM sets up: far beyond any electrode film (the paper's largest case
+/// has ~1.6e5 particles and ~1e8 steps), far below what overflows (32-bit particle ids, doubles).
+inline constexpr double max_particles = 1e8;
+inline constexpr double max_steps = 1e12;            ///< estimated DEM steps of the run
+inline constexpr double max_wet_film_height = 0.01;  ///< [m]; wet electrode films are < 1 mm
+inline constexpr double max_dryer_steps = 1e6;       ///< RK4 steps of the dryer model (D-2.7)
+/// Memory per particle: state (13 Vec3), species and ids, ~20 neighbour entries with history
+/// (the estimate `drydem check` prints).
+inline constexpr double bytes_per_particle = 13 * 24.0 + 6 * 8 + 20 * 40;
+
+/// What a configuration implies, as plain doubles (never overflowing integers).
+struct DerivedQuantities {
+    double particles = 0.0;        ///< unrounded total count
+    double wet_film_height = 0.0;  ///< [m]
+    double solids_density = 0.0;   ///< [kg/m^3]
+    double sim_time = 0.0;         ///< estimated simulated time of the run [s] (M-8.3)
+    double steps = 0.0;            ///< sim_time / run.time_step
+    double memory_bytes = 0.0;     ///< particles x bytes_per_particle + 5 MB
+    double dryer_steps = 0.0;      ///< RK4 steps of the dryer model over all zones
+};
+
+/// Computes the derived quantities without checking them (InputError only from make_recipe).
+[[nodiscard]] DerivedQuantities derived_quantities(const Config& c);
+
+/// Throws InputError when a derived quantity is not finite and positive or beyond the limits
+/// above, naming the keys behind it. `bare_lengths`: length keys the input gave as bare numbers
+/// (SI metres); a suspicious one gets a hint ("film.box_x = 40 is 40 m; did you mean \"40 um\"?").
+void check_derived_quantities(const Config& c, const std::vector<std::string>& bare_lengths = {});
+
+/// Physical memory of this machine [bytes] (0 if unknown).
+[[nodiscard]] double physical_memory_bytes();
+
+/// Throws InputError when the run needs more memory than 80 % of this machine has (the check of
+/// `drydem run`; `drydem check` only reports it, a config may be meant for a bigger machine).
+void check_fits_this_machine(const Config& c);
+
+} // namespace drydem

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Output folders of `drydem run` (issue 14, README "Outputs"): a folder holding a run is refused
+# without --overwrite; --overwrite removes the old run's files (its old frames) and keeps the
+# user's; a folder without a run is never cleared; a folder locked by another run is refused; a
+# quote in run.name still resumes (config.toml written by the TOML library); a run refused by the
+# stability guard at its start writes summary.json with "failed" (exit 1).
+# usage: output_folder.sh DRYDEM WORKDIR
+set -u
+drydem=$1 work=$2
+rm -rf "$work" && mkdir -p "$work"
+status=0
+fail() { echo "FAIL: $*"; status=1; }
+# A run that stops at once: the smallest film, ended by run.max_process_time (exit 1), with the
+# first checkpoint written at the start.
+quick=(--set film.areal_loading=1.5mg/cm^2 --set film.box_x=36um --set film.box_y=36um
+       --set 'formulation.ncm_diameters=["3 um"]' --set run.max_process_time=0.02s
+       --set drying.relaxation=0.01s --set run.threads=1 --quiet --no-plots)
+expect() { # expect CODE PATTERN -- drydem args...
+  local code=$1 pattern=$2; shift 3
+  local out; out=$("$drydem" "$@" 2>&1); local rc=$?
+  [[ $rc -eq $code ]] || fail "drydem $* exited $rc, expected $code: $out"
+  [[ -z $pattern ]] || grep -q -- "$pattern" <<<"$out" || fail "drydem $*: no '$pattern' in: $out"
+}
+
+# 1. A previous run's folder: refused, then replaced with --overwrite (old frame gone, user file kept).
+old="$work/old"
+mkdir -p "$old/snapshots"
+touch "$old/config.toml" "$old/log.txt" "$old/snapshots/frame_00099.vtp" "$old/my_notes.txt"
+expect 2 "holds a previous run" -- run -o "$old" "${quick[@]}"
+[[ -f "$old/snapshots/frame_00099.vtp" ]] || fail "a refused run touched the old run's files"
+expect 1 "" -- run -o "$old" --overwrite "${quick[@]}"
+[[ -f "$old/snapshots/frame_00099.vtp" ]] && fail "--overwrite left the old run's frame_00099.vtp"
+[[ -f "$old/my_notes.txt" ]] || fail "--overwrite removed a file the run did not write"
+grep -q '"status": "failed"' "$old/summary.json" || fail "no summary.json of the new run"
+
+# 2. A folder without a run is never cleared, not even with --overwrite.
+foreign="$work/foreign"
+mkdir -p "$foreign" && echo data >"$foreign/thesis.tex"
+expect 2 "holds no DryDEM run" -- run -o "$foreign" --overwrite "${quick[@]}"
+[[ -f "$foreign/thesis.tex" && ! -e "$foreign/log.txt" ]] || fail "the foreign folder was changed"
+
+# 3. A quote and a backslash in run.name: config.toml reads back, --resume and analyze work.
+quoted="$work/quoted"
+expect 1 "" -- run -o "$quoted" --set 'run.name="say \"hi\" \\ o"' "${quick[@]}"
+[[ -f "$quoted/checkpoint/state.bin" ]] || fail "no checkpoint at the start of the run"
+expect 1 "no final thickness" -- run --resume "$quoted" --quiet --no-plots
+grep -q 'name = "say \\"hi\\" \\\\ o"' "$quoted/config.toml" || fail "run.name not escaped in config.toml"
+out=$("$drydem" analyze "$quoted" --no-voxels --no-plots --quiet -o "$work/quoted_analysis" 2>&1)
+grep -q "TOML syntax error" <<<"$out" && fail "analyze cannot read the run's config.toml: $out"
+
+# 4. Two runs in one folder: a new run and a resume are refused while another process holds the lock.
+flock "$quoted/.drydem.lock" sleep 20 &
+holder=$!
+sleep 0.5
+expect 2 "is in use by another drydem run" -- run -o "$quoted" --overwrite "${quick[@]}"
+expect 2 "is in use by another drydem run" -- run --resume "$quoted" --quiet --no-plots
+kill "$holder"; wait "$holder" 2>/dev/null
+
+# 5. numerics.stability_guard = "refuse" refusing at the start: summary.json says failed.
+refused="$work/refused"
+expect 1 "stability bound" -- run -o "$refused" --set 'numerics.stability_guard="refuse"' \
+  --set run.time_step=1e-6s "${quick[@]}"
+grep -q '"status": "failed"' "$refused/summary.json" || fail "no failed summary.json after refuse"
+grep -q 'stability bound' "$refused/summary.json" || fail "summary.json does not say why"
+exit $status
