@@ -132,14 +132,14 @@ TEST(Config, ToTomlRoundTrip) {
 } // namespace
 
 // Minimum image needs a box side of at least twice the widest reach plus skin: for two 11.35 um
-// spheres d + r_L = 1.5 d (M-4.1), so 2 (17.025 + 0.1) um = 34.25 um; 20 um spheres need 60.2 um.
+// spheres d + r_L = 1.5 d (M-4.1), so 2 (17.025 + 0.3) um = 34.65 um with the semi-implicit skin; 20 um spheres need 60.6 um.
 TEST(Config, BoxMustHoldTwiceTheLargestInteractionRange) {
     EXPECT_NO_THROW(load_config("", "t", {"film.box_x=36um", "film.box_y=36um"}));
     const std::string msg = input_error("", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=50um",
                                              "film.box_y=80um"});
     EXPECT_NE(msg.find("film.box_x"), std::string::npos) << msg;
     EXPECT_NE(msg.find("50 um"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("60.2"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("60.6"), std::string::npos) << msg;
     EXPECT_NO_THROW(load_config("", "t", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=61um",
                                           "film.box_y=61um"}));
 }

@@ -30,8 +30,8 @@ void print_guard_clusters(const Config& c, const FilmRecipe& r) {
         const auto e = cluster_simulation(expl, r, k).stability_estimate();
         const auto i = cluster_simulation(semi, r, k).stability_estimate();
         fmt::print("    {:<34} {:>12.3g} {:>12.3g} {:>12.3g} | {:>12.3g} {:>12.3g}\n", k.name,
-                   e.damping_rate, e.stiffness_rate, guarded_time_step(time_step_cap_of(expl), e),
-                   i.stiffness_rate, guarded_time_step(time_step_cap_of(semi), i));
+                   e.damping_rate, e.stiffness_rate, guarded_time_step(expl.time_step_cap(), e),
+                   i.stiffness_rate, guarded_time_step(semi.time_step_cap(), i));
     }
 }
 
@@ -81,7 +81,7 @@ void print_check(const Config& c) {
     const double e_cb = cb.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
     const HertzMindlinParams& hm = ff.pair_params(r.cb_species(), r.cb_species()).contact;
     const double tr = rayleigh_time(rc, cb.density, e_cb, c.poisson_ratio);
-    const double cap = time_step_cap_of(c);
+    const double cap = c.time_step_cap();
     fmt::print("\nTime step, smallest particle d = {:.3g} um, m = {:.4g} kg\n", cb.diameter * 1e6, m);
     fmt::print("  integrator                {} (numerics.integrator), largest step {:.3g} s (scaled)\n",
                c.integrator, cap);
@@ -108,7 +108,7 @@ void print_check(const Config& c) {
         left -= dz;
     }
     t_sim += s.sim_time(c.relaxation);
-    const double steps = t_sim / time_step_cap_of(c);
+    const double steps = t_sim / c.time_step_cap();
     fmt::print("\nCost estimate (M-8.3)\n");
     fmt::print("  final thickness (~2.4 g/cm3) {:.4g} um, level travel {:.4g} um\n", h_final * 1e6, travel * 1e6);
     fmt::print("  simulated time            {:.3g} s ({:.3g} s process, incl. {:g} s relaxation)\n",

@@ -201,9 +201,9 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
 
     EngineSettings es;
     es.integrator = integrator_of(c);
-    const double time_step_cap = time_step_cap_of(c);
+    const double time_step_cap = c.time_step_cap();
     es.dt = time_step_cap;
-    es.skin = skin_of(c);
+    es.skin = c.neighbor_skin();
     es.threads = c.threads;
     es.sort_every = c.sort_every;
     es.overlap_limit = c.overlap_limit;

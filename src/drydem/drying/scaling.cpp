@@ -102,14 +102,4 @@ Integrator integrator_of(const Config& c) {
     return c.integrator == "explicit" ? Integrator::explicit_verlet : Integrator::semi_implicit;
 }
 
-double time_step_cap_of(const Config& c) {
-    if (c.time_step > 0.0) return c.time_step;
-    return integrator_of(c) == Integrator::explicit_verlet ? 1.0e-11 : 1.0e-10;
-}
-
-double skin_of(const Config& c) {
-    if (c.skin > 0.0) return c.skin;
-    return integrator_of(c) == Integrator::explicit_verlet ? 0.1e-6 : 0.3e-6;
-}
-
 } // namespace drydem

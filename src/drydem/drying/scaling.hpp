@@ -33,13 +33,6 @@ ScaledParameters scale_parameters(const Config& c);
 
 /// numerics.integrator as the engine's enum.
 Integrator integrator_of(const Config& c);
-/// The largest time step of the run: run.time_step, or with 0 the integrator's default cap
-/// (explicit 1e-11 s, C-23; semi-implicit 1e-10 s, the contact limit, docs/model.md).
-double time_step_cap_of(const Config& c);
-/// The neighbour skin: numerics.skin, or with 0 the integrator's default (explicit 0.1 um,
-/// M-9.4; semi-implicit 0.3 um: at its ~10x longer steps a 0.1 um skin is used up in a few dozen
-/// steps, and rebuilds and guard estimates would cost more than the wider list, docs/performance.md).
-double skin_of(const Config& c);
 nlohmann::json to_json(const ScaledParameters& s);
 
 /// Species pair table and particle forces of the drying simulation, from the recipe's species

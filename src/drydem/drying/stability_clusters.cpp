@@ -52,8 +52,8 @@ Simulation cluster_simulation(const Config& c, const FilmRecipe& recipe, const R
                               double skin) {
     EngineSettings es;
     es.integrator = integrator_of(c);
-    es.dt = time_step_cap_of(c);
-    es.skin = skin >= 0.0 ? skin : skin_of(c);
+    es.dt = c.time_step_cap();
+    es.skin = skin >= 0.0 ? skin : c.neighbor_skin();
     es.threads = 1;
     return Simulation(k.particles, Box{std::max(c.box_x, 60e-6), std::max(c.box_y, 60e-6)},
                       make_drying_force_field(c, recipe, scale_parameters(c)), es);

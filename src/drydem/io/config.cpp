@@ -380,7 +380,7 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
     if (!c.ncm_diameters.empty()) {
         const double d_max = *std::max_element(c.ncm_diameters.begin(), c.ncm_diameters.end());
         const double cb_reach = 1.5 * c.cb_diameter;
-        const double skin = c.skin > 0.0 ? c.skin : 0.3e-6; // 0: the largest automatic skin
+        const double skin = c.neighbor_skin();
         const double need = 2.0 * (std::max(1.5 * d_max, cb_reach) + skin);
         for (const auto& [key, side] : {std::pair{"film.box_x", c.box_x}, std::pair{"film.box_y", c.box_y}})
             if (side < need)

@@ -74,7 +74,7 @@ DerivedQuantities derived_quantities(const Config& c) {
     d.wet_film_height = r.wet_film_height;
     d.solids_density = r.solids_density;
     d.sim_time = estimated_sim_time(c, r, s);
-    d.steps = d.sim_time / c.time_step;
+    d.steps = d.sim_time / c.time_step_cap();
     d.memory_bytes = d.particles * bytes_per_particle + 5e6;
     for (double len : c.dryer_zone_lengths) d.dryer_steps += std::ceil(len / c.line_speed / c.dryer_time_step);
     return d;
@@ -143,10 +143,10 @@ void check_derived_quantities(const Config& c, const std::vector<std::string>& b
         refuse(c, fmt::format("drying.relaxation = {:g} s is not shorter than run.max_process_time = {:g} s: the run "
                               "would stop before its relaxation window ends", c.relaxation, c.max_process_time),
                {"drying.relaxation", "run.max_process_time"}, bare);
-    const double steps = estimated_sim_time(c, r, s) / c.time_step;
+    const double steps = estimated_sim_time(c, r, s) / c.time_step_cap();
     if (!positive_finite(steps) || steps > max_steps)
         refuse(c, fmt::format("the run would take about {:.3g} steps of {:g} s; allowed at most {:g}",
-                              steps, c.time_step, max_steps),
+                              steps, c.time_step_cap(), max_steps),
                {"run.time_step", "scaling.time_factor", "drying.relaxation", "dryer.shrinkage_rates",
                 "film.areal_loading"}, bare);
 
