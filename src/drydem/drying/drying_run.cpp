@@ -4,6 +4,7 @@
 #include "drydem/io/analysis_writer.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
+#include "drydem/drying/eta.hpp"
 #include "drydem/drying/liquid_level.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/simulation.hpp"
@@ -365,7 +366,8 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
     std::uint64_t& builds_seen = pr.builds_seen;
     if (!resumed) builds_seen = sim.neighbors().builds();
     auto last_progress = Clock::now(), last_checkpoint = Clock::now();
-    const double t_session = sim.time();
+    RecentPace pace;
+    pace.add(0.0, sim.time());
     const std::int64_t step_session = sim.step_count();
     const double areal_mass = recipe.realised_dry_mass() / recipe.base_area;
     try {
@@ -445,14 +447,15 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
                 last_progress = now;
                 // ETA: until the level is d_max below the expected final top (the current top,
                 // or at most the thickness of an uncalendered film of ~2.4 g/cm3, M-8.3), plus
-                // the relaxation window; at this session's pace.
+                // the relaxation window; at the pace of the last two minutes (RecentPace).
                 const double expected_top = std::min(top, std::max(areal_mass / 2400.0, 0.5 * top));
                 const double remaining =
                     pr.final_found ? pr.t_end - t
                                    : std::max(0.0, schedule.time_at_level(std::max(0.0, expected_top - final_gap)) - t) +
                                          scaled.sim_time(c.relaxation);
                 const double elapsed = std::chrono::duration<double>(now - wall_start).count();
-                const double eta = elapsed / std::max(t - t_session, 1e-30) * remaining;
+                pace.add(elapsed, t);
+                const double eta = pace.eta(remaining);
                 const std::string line = fmt::format(
                     "step {:>9}  t = {:8.3f} s ({:.4g} us sim)  level {:7.3f} um  top {:7.3f} um  "
                     "contacts {:>7}  {:.3g} particle-steps/s  ETA {:.0f} s",
