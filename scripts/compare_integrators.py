@@ -1,0 +1,100 @@
+#!/usr/bin/python3
+"""Compares drying runs of two integrators (issue 11 item 5): the results that matter to a user,
+per run, as mean and seed-to-seed standard deviation per integrator, and whether the difference
+of the means sits inside the seed spread; plus a plot of the thickness vs process time (paper
+Fig. 5) and the CB profile, overlaid.
+
+usage: compare_integrators.py OUT_PREFIX RUN_DIR... (each run's config.toml names its integrator)
+writes OUT_PREFIX.md (table) and OUT_PREFIX.png
+"""
+import csv, json, os, statistics, sys
+import tomllib
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+QUANTITIES = [
+    ("final thickness [um]", lambda s, a: s["final_thickness_um"]),
+    ("relaxed thickness [um]", lambda s, a: s["final_thickness_relaxed_um"]),
+    ("density [g/cm3]", lambda s, a: s["density_g_cm3"]),
+    ("porosity", lambda s, a: s["porosity"]),
+    ("p99 top [um]", lambda s, a: s["film_top_p99_um"]),
+    ("process time final [s]", lambda s, a: s["process_time_final_s"]),
+    ("coordination NCM-CB per NCM", lambda s, a: a["coordination"]["ncm_cb"]),
+    ("coordination CB-CB per CB", lambda s, a: a["coordination"]["cb_cb"]),
+    ("coordination NCM-NCM per NCM", lambda s, a: a["coordination"]["ncm_ncm"]),
+    ("CB on substrate fraction", lambda s, a: a["coordination"]["cb_substrate_fraction"]),
+    ("Eq. 2 CB-binder porosity", lambda s, a: a["cb_binder_porosity_eq2"]),
+    ("pore-size peak [um]", lambda s, a: a.get("psd_peak_um")),
+    ("pore chord mean z [um]", lambda s, a: a["pore_chord_mean_um"]["z"]),
+    ("wall time [s]", lambda s, a: s["wall_time_s"]),
+    ("steps", lambda s, a: s["steps"]),
+    ("mean time step [s]", lambda s, a: s.get("time_step_mean_s")),
+]
+
+
+def load(run):
+    with open(os.path.join(run, "config.toml"), "rb") as f:
+        cfg = tomllib.load(f)
+    s = json.load(open(os.path.join(run, "summary.json")))
+    a = json.load(open(os.path.join(run, "analysis", "analysis.json")))
+    return cfg.get("numerics", {}).get("integrator", "semi_implicit"), s, a
+
+
+def main():
+    prefix, runs = sys.argv[1], sys.argv[2:]
+    groups = {}
+    for run in runs:
+        integ, s, a = load(run)
+        groups.setdefault(integ, []).append((run, s, a))
+    names = sorted(groups)
+    lines = ["| quantity | " + " | ".join(f"{n} (n={len(groups[n])}) mean ± s.d." for n in names) +
+             " | difference | inside spread |", "|---|" + "---|" * (len(names) + 2)]
+    for label, get in QUANTITIES:
+        stats = []
+        for n in names:
+            vals = [get(s, a) for _, s, a in groups[n]]
+            vals = [v for v in vals if v is not None]
+            m = statistics.mean(vals) if vals else float("nan")
+            sd = statistics.stdev(vals) if len(vals) > 1 else float("nan")
+            stats.append((m, sd))
+        cells = [f"{m:.4g} ± {sd:.2g}" for m, sd in stats]
+        diff, inside = "", ""
+        if len(stats) == 2 and not label.startswith(("wall", "steps", "mean time")):
+            d = stats[1][0] - stats[0][0]
+            spread = max(stats[0][1], stats[1][1])
+            diff = f"{d:+.3g}"
+            inside = "yes" if abs(d) <= spread else f"no ({abs(d) / spread:.1f} s.d.)"
+        lines.append(f"| {label} | " + " | ".join(cells) + f" | {diff} | {inside} |")
+    open(prefix + ".md", "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    colors = {"explicit": "tab:blue", "semi_implicit": "tab:red"}
+    for n in names:
+        for k, (run, s, a) in enumerate(groups[n]):
+            rows = list(csv.DictReader(open(os.path.join(run, "timeseries.csv"))))
+            t = [float(r["process_time_s"]) for r in rows]
+            ax1.plot(t, [float(r["film_thickness_um"]) for r in rows], color=colors.get(n),
+                     lw=1, alpha=0.8, label=n if k == 0 else None)
+            if k == 0:
+                ax1.plot(t, [float(r["liquid_level_um"]) for r in rows], color="gray", lw=0.8,
+                         ls="--", label="liquid level" if n == names[0] else None)
+            prof = list(csv.DictReader(open(os.path.join(run, "analysis", "profiles.csv"))))
+            ax2.plot([float(r["cb_envelope"]) for r in prof], [float(r["z_um"]) for r in prof],
+                     color=colors.get(n), lw=1, alpha=0.8, label=n if k == 0 else None)
+    ax1.set_xlabel("process time [s]")
+    ax1.set_ylabel("film thickness (highest top) [um]")
+    ax1.set_title("thickness vs time (paper Fig. 5), every seed")
+    ax1.legend()
+    ax2.set_xlabel("CB envelope volume fraction [-]")
+    ax2.set_ylabel("height z [um]")
+    ax2.set_title("CB profile of the dried film, every seed")
+    ax2.legend()
+    fig.tight_layout()
+    fig.savefig(prefix + ".png", dpi=120)
+
+
+if __name__ == "__main__":
+    main()
