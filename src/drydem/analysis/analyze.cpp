@@ -44,6 +44,14 @@ std::vector<double> diameter_histogram(const VoxelGrid& g, const std::vector<std
 
 } // namespace
 
+void set_transport_options(AnalysisOptions& o, const Config& c) {
+    o.transport.voxels = c.analysis_transport_voxel_sizes;
+    o.transport.sigma_ncm = c.analysis_ncm_conductivity;
+    o.transport.sigma_cb = c.analysis_cb_conductivity;
+    o.surfaces.points = c.analysis_surface_points;
+    o.surfaces.cb_gap = c.analysis_cb_coverage_gap;
+}
+
 AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     auto say = [&](const std::string& m) {
         if (o.log) o.log(m);
@@ -56,6 +64,15 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
     r.bulk = bulk_properties(s, r.profiles.solid(), o.profile_dz);
     r.coordination = coordination(s, o.contact_gap);
+    r.base_area = s.box.area();
+    r.surfaces = ncm_surfaces(s, o.surfaces);
+    // Transport on its own (coarser) voxelizations of the coating below the pore top.
+    if (!o.transport.voxels.empty()) {
+        TransportOptions to = o.transport;
+        to.log = o.log;
+        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
+        r.transport = film_transport(s, coating_top, to);
+    }
     if (!(o.voxel > 0.0)) return r;
 
     // Refuse what this machine cannot hold instead of dying in the allocation.

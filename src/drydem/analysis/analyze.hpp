@@ -7,6 +7,8 @@
 #include "drydem/analysis/chords.hpp"
 #include "drydem/analysis/coordination.hpp"
 #include "drydem/analysis/profiles.hpp"
+#include "drydem/analysis/surfaces.hpp"
+#include "drydem/analysis/transport.hpp"
 #include "drydem/analysis/voxel_grid.hpp"
 #include <array>
 #include <cstdint>
@@ -29,6 +31,10 @@ struct AnalysisOptions {
     /// space of the coating) or "highest" (the paper's thickness).
     std::string pore_top = "half_solid";
     bool keep_grid = false;       ///< hand the voxel image back (for export)
+    /// Tortuosity and conductivities (transport.hpp) on the coating below the pore top; no voxel
+    /// sizes = none.
+    TransportOptions transport;
+    SurfaceOptions surfaces;      ///< NCM surface in contact with electrolyte and CB (surfaces.hpp)
     std::function<void(const std::string&)> log; ///< progress lines, may be empty
 };
 
@@ -60,8 +66,15 @@ struct AnalysisResult {
     bool distance_saturated = false;   ///< some pore was wider than the 16-bit distance range
     std::size_t memory_bytes = 0;      ///< peak of the voxel work arrays
     std::optional<VoxelGrid> grid;     ///< when keep_grid
+    std::optional<Transport> transport; ///< when transport voxel sizes are given
+    Surfaces surfaces;
+    double base_area = 0.0;            ///< periodic x-y base [m^2]
     std::vector<double> seconds;       ///< voxelize, EDT, chords, local thickness, intrusion
 };
+
+/// The transport and surface options of a config (analysis.transport_voxel_sizes, *_conductivity,
+/// surface_points, cb_coverage_gap) into `o`.
+void set_transport_options(AnalysisOptions& o, const Config& c);
 
 [[nodiscard]] AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o);
 
