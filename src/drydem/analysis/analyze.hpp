@@ -3,6 +3,7 @@
 // bulk numbers, exact profiles, coordination, and on the voxel image the chord lengths, local
 // thickness and simulated mercury intrusion. A plain value in, a plain value out (no I/O).
 #pragma once
+#include "drydem/analysis/binder_migration.hpp"
 #include "drydem/analysis/bulk.hpp"
 #include "drydem/analysis/chords.hpp"
 #include "drydem/analysis/coordination.hpp"
@@ -35,6 +36,12 @@ struct AnalysisOptions {
     /// sizes = none.
     TransportOptions transport;
     SurfaceOptions surfaces;      ///< NCM surface in contact with electrolyte and CB (surfaces.hpp)
+    /// Binder migration (binder_migration.hpp) from the run's timeseries.csv; empty = none. Its
+    /// Bruggeman exponent is the film's through-plane one when the transport solve gives one in
+    /// [1, 5], else BinderParams::bruggeman.
+    std::string timeseries;
+    BinderParams binder;
+    std::vector<double> binder_rate_factors{0.5, 2.0}; ///< also with the drying this much faster
     std::function<void(const std::string&)> log; ///< progress lines, may be empty
 };
 
@@ -68,6 +75,8 @@ struct AnalysisResult {
     std::optional<VoxelGrid> grid;     ///< when keep_grid
     std::optional<Transport> transport; ///< when transport voxel sizes are given
     Surfaces surfaces;
+    std::optional<BinderProfile> binder;
+    std::vector<std::pair<double, BinderProfile>> binder_rates; ///< (rate factor, profile)
     double base_area = 0.0;            ///< periodic x-y base [m^2]
     std::vector<double> seconds;       ///< voxelize, EDT, chords, local thickness, intrusion
 };

@@ -80,8 +80,8 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
             for (int i = 0; i < n; ++i) theta[std::size_t(i)] = eps[std::size_t(i)] * S;
         }
     };
-    std::vector<double> th0(std::size_t(n)), th1(std::size_t(n)), m(std::size_t(n)), c(std::size_t(n)),
-        G(std::size_t(n) + 1), r(std::size_t(n)), lo(std::size_t(n)), di(std::size_t(n)), up(std::size_t(n));
+    const std::size_t N = static_cast<std::size_t>(n);
+    std::vector<double> th0(N), th1(N), m(N), c(N), G(N + 1), r(N), lo(N), di(N), up(N);
     double t = h.time.front(), H0 = 0.0, H1 = 0.0, S0 = 1.0, S1 = 1.0;
     state(t, th0, H0, S0);
     const double h_start = H0;

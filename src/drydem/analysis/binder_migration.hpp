@@ -26,7 +26,7 @@
 namespace drydem::analysis {
 
 struct BinderParams {
-    double diffusivity = 6.6e-12;   ///< D₀ of dissolved PVDF in NMP [m²/s] (Stokes–Einstein, see docs)
+    double diffusivity = 6.5e-12;   ///< D₀ of dissolved PVDF in NMP [m²/s] (Stokes–Einstein, see docs)
     double bruggeman = 1.5;         ///< α of D_eff = D₀ θ^(α−1) (or the film's own, from the transport solve)
     int cells = 200;
     double residual_saturation = 0.02; ///< stop when the pores hold this fraction of solvent

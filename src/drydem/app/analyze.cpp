@@ -36,6 +36,9 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
     if (o.cb_type > 0) rule.cb_type = o.cb_type;
     const analysis::Structure s = analysis::structure_from_file(file, c, rule);
     analysis::AnalysisOptions a = o.analysis;
+    // A run folder's snapshot: its time series drives the binder migration model.
+    if (const fs::path ts = o.snapshot.parent_path() / "timeseries.csv"; a.timeseries.empty() && o.snapshot.filename() == "final.csv" && fs::exists(ts))
+        a.timeseries = ts.string();
     a.keep_grid = o.export_voxels || o.tiff;
     if (!o.quiet) a.log = [](const std::string& m) { fmt::print("  {}\n", m); };
     if (a.voxel > 0.0) {

@@ -134,6 +134,23 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
             {"specific_surface_electrolyte_per_um", volume > 0 ? a.electrolyte / volume * 1e-6 : 0.0},
             {"specific_surface_electrolyte_m2_g", r.bulk.mass.ncm > 0 ? a.electrolyte / (r.bulk.mass.ncm * 1e3) : 0.0}};
     }
+    if (r.binder) {
+        const BinderProfile& b = *r.binder;
+        nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+        rates.push_back({{"rate_factor", 1.0}, {"peclet", b.peclet}, {"bottom10", b.bottom10}, {"top10", b.top10}});
+        for (const auto& [f, bf] : r.binder_rates)
+            rates.push_back({{"rate_factor", f}, {"peclet", bf.peclet}, {"bottom10", bf.bottom10}, {"top10", bf.top10}});
+        j["binder_migration"] = {{"model", "paper Eq. 1, 1D convection-diffusion (docs/analysis.md)"},
+                                 {"diffusivity_m2_s", o.binder.diffusivity},
+                                 {"evaporation_velocity_um_s", b.evaporation_rate * 1e6},
+                                 {"peclet", b.peclet},
+                                 {"consolidation_time_s", b.consolidation_time},
+                                 {"end_time_s", b.end_time},
+                                 {"bottom10_over_mean", b.bottom10},
+                                 {"top10_over_mean", b.top10},
+                                 {"mass_balance", b.mass_balance},
+                                 {"drying_rate_factors", rates}};
+    }
     j["version"] = DRYDEM_VERSION;
     j["git_commit"] = DRYDEM_GIT_HASH;
     return j;
@@ -166,6 +183,17 @@ void write_analysis(const std::filesystem::path& dir, const AnalysisResult& r, c
                                   l.tau_z / l.porosity, bruggeman_exponent(l.porosity, l.tau_z),
                                   l.electronic_z.sigma_eff, l.cb_z.sigma_eff, l.cb_z.percolates ? 1 : 0,
                                   l.pore_z.iterations, l.seconds, double(l.memory_bytes) / 1e6);
+        });
+    if (r.binder)
+        write_file_atomically(dir / "binder_profile.csv", [&](std::ostream& os) {
+            os << "z_um,binder_over_mean";
+            for (const auto& fr : r.binder_rates) os << fmt::format(",binder_over_mean_rate_x{:g}", fr.first);
+            os << "\n";
+            for (std::size_t i = 0; i < r.binder->z.size(); ++i) {
+                os << fmt::format("{:.6g},{:.6g}", r.binder->z[i] * 1e6, r.binder->binder[i]);
+                for (const auto& fr : r.binder_rates) os << fmt::format(",{:.6g}", fr.second.binder[i]);
+                os << "\n";
+            }
         });
     if (!r.voxelized) return;
     const double a = r.voxel * 1e6;

@@ -142,6 +142,7 @@ const std::vector<Field>& schema() {
         {"analysis.cb_conductivity", &Config::analysis_cb_conductivity, D::dimensionless, 0, inf},
         {"analysis.surface_points", &Config::analysis_surface_points, D::dimensionless, 0, 1e6},
         {"analysis.cb_coverage_gap", &Config::analysis_cb_coverage_gap, D::length, 0, 10e-6},
+        {"analysis.binder_diffusivity", &Config::analysis_binder_diffusivity, D::dimensionless, 0, 1e-6},
         {"output.timeseries_every", &Config::timeseries_every, D::time, 0, inf, true},
         {"output.snapshot_every", &Config::snapshot_every, D::time, 0, inf},
         {"output.progress_every", &Config::progress_every, D::time, 0, inf, true},

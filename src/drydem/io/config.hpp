@@ -125,6 +125,7 @@ struct Config {
     double analysis_cb_conductivity = 100.0;   ///< electronic conductivity of a CB agglomerate [S/m]
     int analysis_surface_points = 400;         ///< points per NCM sphere of the surface split; 0 = none
     double analysis_cb_coverage_gap = 0.1e-6;  ///< NCM surface within this of a CB surface is covered [m]
+    double analysis_binder_diffusivity = 6.5e-12; ///< D₀ of dissolved PVDF in NMP [m²/s] (Stokes–Einstein)
 
     // [output]
     double timeseries_every = 0.5;       ///< [s physical]

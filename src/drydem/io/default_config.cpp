@@ -130,6 +130,7 @@ ncm_conductivity = 0.01          # electronic conductivity of NCM [S/m] (an inpu
 cb_conductivity = 100            # electronic conductivity of a CB agglomerate, carbon + binder + pores [S/m]
 surface_points = 400             # points per NCM sphere for its surface split (0 = none)
 cb_coverage_gap = "0.1 um"       # NCM surface within this distance of a CB agglomerate counts as covered
+binder_diffusivity = 6.5e-12     # dissolved PVDF in NMP [m^2/s]: Stokes-Einstein, 20 nm, 1.67 mPa s, 298 K (binder migration)
 
 [output]
 timeseries_every = "0.5 s"       # physical time between time-series rows
