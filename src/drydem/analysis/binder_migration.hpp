@@ -15,7 +15,7 @@
 //     capillary pressure keeps the saturation S uniform over the height (small pores stay filled),
 //     θ = ε_f(z) S(t): the solvent flows to the top, F(z) = E/ρ_l ∫₀^z ε_f / ∫₀^H ε_f, and carries
 //     the binder there. After the run's last row the level goes on at its last rate (the dryer's);
-//     the model stops at S = residual_saturation, where the binder is left in place.
+//     the model stops at S = residual_saturation (binder immobile), where the binder is left in place.
 // Finite volumes on a grid that stretches with the film top, upwind convection (explicit, CFL),
 // implicit diffusion (tridiagonal), no binder flux through substrate and top. Mass is conserved to
 // round-off.
@@ -29,7 +29,11 @@ struct BinderParams {
     double diffusivity = 6.5e-12;   ///< D₀ of dissolved PVDF in NMP [m²/s] (Stokes–Einstein, see docs)
     double bruggeman = 1.5;         ///< α of D_eff = D₀ θ^(α−1) (or the film's own, from the transport solve)
     int cells = 200;
-    double residual_saturation = 0.02; ///< stop when the pores hold this fraction of solvent
+    /// Stop when the pores hold this fraction of their solvent: the binder is taken as immobile
+    /// from there (the solution has concentrated 1/S-fold — ~5 wt% PVDF in NMP at the start, a gel
+    /// near 20-25 wt%: an assumption, not a measured value). Below, the pore diffusion fades as
+    /// θ^(α−1) while the capillary flow F/θ grows, and the result would hinge on this cut.
+    double residual_saturation = 0.2;
     double cfl = 0.4;
     double max_step = 0.01;         ///< [s]
 };
