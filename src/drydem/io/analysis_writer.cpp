@@ -101,7 +101,7 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
             converged = converged && c->converged;
             balance = std::max(balance, c->flux_balance);
         }
-        tj["solver"] = {{"method", "Eigen ConjugateGradient, Jacobi preconditioner"},
+        tj["solver"] = {{"method", std::string("Eigen ConjugateGradient, ") + L.pore_z.preconditioner + " preconditioner"},
                         {"converged", converged},
                         {"max_flux_balance", balance}};
         nlohmann::ordered_json conv = nlohmann::ordered_json::array();
