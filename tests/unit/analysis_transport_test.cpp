@@ -234,3 +234,43 @@ TEST(Transport, ColumnOfCbSpheresPercolatesAndFilmPoresAreConnected) {
     EXPECT_FALSE(u.reported().cb_z.percolates);
     EXPECT_EQ(u.reported().cb_z.sigma_eff, 0.0);
 }
+
+TEST(RandomWalk, FreeSpaceDiffusesAtD0AndChannelsOnlyAlongTheirAxis) {
+    ConductionProblem free = uniform(16, 16, 16, 1.0f);
+    free.periodic = {true, true, true};
+    const RandomWalkResult f = random_walk(free, 4000, 4000);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(f.diffusivity[std::size_t(d)], 1.0, 4.0 * f.standard_error[std::size_t(d)]);
+    EXPECT_LT(f.standard_error[0], 0.04);
+    // Straight channels of radius 4 voxels along z (periodic z): every z step is taken, D_z = D₀;
+    // across, the walkers stay in their channel: ⟨Δx²⟩ bounded by the channel, D_x → 0.
+    ConductionProblem p = uniform(24, 24, 12, 0.0f);
+    p.periodic = {true, true, true};
+    for (int k = 0; k < p.nz; ++k)
+        for (int j = 0; j < p.ny; ++j)
+            for (int i = 0; i < p.nx; ++i) {
+                const double dx = std::fmod(i + 0.5, 12.0) - 6.0, dy = std::fmod(j + 0.5, 12.0) - 6.0;
+                if (dx * dx + dy * dy < 16.0) at(p, i, j, k) = 1.0f;
+            }
+    const RandomWalkResult c = random_walk(p, 4000, 6000);
+    EXPECT_NEAR(c.diffusivity[2], 1.0, 4.0 * c.standard_error[2]);
+    EXPECT_LT(c.diffusivity[0], 0.02); // ⟨Δx²⟩ ≤ (2·4)² = 64 voxels² against 2000 free
+}
+
+TEST(RandomWalk, AgreesWithTheConductionSolveOnARandomPoreSpace) {
+    // Site-random pores (p = 0.7, above the percolation threshold 0.31), 32³: τ_x of the solve
+    // (fixed faces in x) and of the walks (periodic) agree within the walkers' error and a boundary
+    // effect of order one voxel / 32.
+    std::mt19937 rng(11);
+    std::bernoulli_distribution pore(0.7);
+    ConductionProblem p = uniform(32, 32, 32, 0.0f);
+    for (float& s : p.sigma) s = pore(rng) ? 1.0f : 0.0f;
+    p.periodic = {true, true, true};
+    p.axis = 0;
+    const double eps = fraction(p);
+    const double tau_solve = tortuosity_factor(eps, solve_conduction(p).sigma_eff);
+    const RandomWalkResult w = random_walk(p, 8000, 8000);
+    const double tau_walk = 1.0 / w.diffusivity[0];
+    const double err = w.standard_error[0] / (w.diffusivity[0] * w.diffusivity[0]);
+    EXPECT_GT(tau_solve, 1.3); // a real detour, not the trivial case
+    EXPECT_NEAR(tau_walk / tau_solve, 1.0, 0.03 + 3.0 * err / tau_solve) << tau_walk << " " << tau_solve;
+}

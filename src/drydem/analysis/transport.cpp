@@ -85,6 +85,17 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
             L.tau_x = tortuosity_factor(L.porosity, L.pore_x.sigma_eff);
             L.tau_y = tortuosity_factor(L.porosity, L.pore_y.sigma_eff);
         }
+        if (o.walkers > 0 && o.walk_steps > 0 && a == o.voxels.back()) {
+            p.periodic = {true, true, false};
+            L.walk = random_walk(p, o.walkers, o.walk_steps);
+            say(fmt::format("transport {:.3g} um, random walks in the pores: tau x {:.4g} +- {:.2g}, y {:.4g} +- {:.2g} "
+                            "({} walkers x {} steps, {:.1f} s)",
+                            a * 1e6, 1.0 / L.walk.diffusivity[0],
+                            L.walk.standard_error[0] / (L.walk.diffusivity[0] * L.walk.diffusivity[0]),
+                            1.0 / L.walk.diffusivity[1],
+                            L.walk.standard_error[1] / (L.walk.diffusivity[1] * L.walk.diffusivity[1]), o.walkers,
+                            o.walk_steps, L.walk.seconds));
+        }
         for (std::size_t i = 0; i < nv; ++i)
             p.sigma[i] = g.label[i] == label_ncm ? float(o.sigma_ncm) : g.label[i] == label_cb ? float(o.sigma_cb) : 0.0f;
         L.electronic_z = solve(2, "solid (NCM + CB) through-plane");

@@ -12,6 +12,7 @@
 // voxelization of the spheres, so the list shows the convergence in voxel size.
 #pragma once
 #include "drydem/analysis/conduction.hpp"
+#include "drydem/analysis/random_walk.hpp"
 #include "drydem/analysis/structure.hpp"
 #include <functional>
 #include <string>
@@ -25,6 +26,9 @@ struct TransportOptions {
     double sigma_cb = 100.0;    ///< electronic conductivity of a CB agglomerate (carbon + binder + pores) [S/m] (input)
     double tolerance = 1e-7;    ///< CG relative residual
     bool in_plane = true;       ///< also τ along x and y
+    /// Second method at the reported voxel size: random walks in the pores, in-plane (x, y
+    /// periodic, substrate and top walls; random_walk.hpp). 0 walkers = none.
+    long walkers = 20000, walk_steps = 20000;
     std::function<void(const std::string&)> log;
 };
 
@@ -37,6 +41,7 @@ struct TransportLevel {
     ConductionResult pore_z, pore_x, pore_y;
     ConductionResult electronic_z;      ///< NCM + CB with their conductivities
     ConductionResult cb_z;              ///< CB alone (σ_CB), for the percolation of the CB network
+    RandomWalkResult walk;              ///< in the pores, at the reported (last) level only
     double seconds = 0.0;               ///< voxelization and all solves
     std::size_t memory_bytes = 0;       ///< peak of one solve plus the image
 };

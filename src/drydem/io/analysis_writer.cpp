@@ -101,6 +101,21 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
             converged = converged && c->converged;
             balance = std::max(balance, c->flux_balance);
         }
+        if (L.walk.walkers > 0) {
+            auto tau = [&](int d) { return L.walk.diffusivity[d] > 0 ? 1.0 / L.walk.diffusivity[d] : 0.0; };
+            auto err = [&](int d) {
+                const double D = L.walk.diffusivity[d];
+                return D > 0 ? L.walk.standard_error[d] / (D * D) : 0.0;
+            };
+            tj["random_walk"] = {{"method", "blind-ant walks in the pores, x, y periodic (second method)"},
+                                 {"walkers", L.walk.walkers},
+                                 {"steps", L.walk.steps},
+                                 {"tortuosity_x", tau(0)},
+                                 {"tortuosity_x_standard_error", err(0)},
+                                 {"tortuosity_y", tau(1)},
+                                 {"tortuosity_y_standard_error", err(1)},
+                                 {"seconds", L.walk.seconds}};
+        }
         tj["solver"] = {{"method", std::string("Eigen ConjugateGradient, ") + L.pore_z.preconditioner + " preconditioner"},
                         {"converged", converged},
                         {"max_flux_balance", balance}};
