@@ -4,6 +4,9 @@ profiles.png  volume fractions of NCM, CB (envelope and carbon + binder) and por
 pore_size.png the pore size distributions: chord lengths (as GeoDict PoroDict, the paper's Fig. 7),
               local thickness (continuous PSD) and the simulated mercury intrusion (dV/dlog d, as
               porosimetry reports it).
+transport.png tortuosity factors and electronic conductivity against the voxel size of the solve
+              (convergence), and the binder profile after drying (paper Eq. 1 model) at the run's
+              drying rate and faster / slower.
 usage: /usr/bin/python3 scripts/plot_analysis.py ANALYSIS_DIR [PLOTS_DIR (default ANALYSIS_DIR/plots)]"""
 import csv
 import json
@@ -106,4 +109,38 @@ if ch and lt:
     ax[2].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(plots, 'pore_size.png'), dpi=120)
+t = a.get('transport')
+b = table('binder_profile.csv')
+if t or b:
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.4))
+    if t:
+        conv = t['convergence']
+        vs = [c['voxel_size_um'] for c in conv]
+        ax[0].plot(vs, [c['tortuosity_through_plane'] for c in conv], 'o-', color='tab:green',
+                   label=f"through-plane τ = {t['tortuosity_factor']['through_plane']:.3f}")
+        ax[0].plot(vs, [c['tortuosity_x'] for c in conv], 's--', color='tab:blue', label='in-plane x')
+        ax[0].plot(vs, [c['tortuosity_y'] for c in conv], '^--', color='tab:orange', label='in-plane y')
+        ax[0].set_xlabel('voxel size of the solve / µm')
+        ax[0].set_ylabel('tortuosity factor τ = ε D₀/D_eff / -')
+        br = t['bruggeman_exponent']['through_plane']
+        ax[0].set_title(f"pores below {t['coating_top_um']:.1f} µm: ε = {t['porosity']:.3f}, "
+                        f"Bruggeman α = {br if br is None else round(br, 3)}\n"
+                        f"σ_e,eff = {t['electronic_conductivity_S_m']:.3g} S/m, CB network "
+                        f"{'percolates' if t['cb_percolates'] else 'does not percolate'}", fontsize=9)
+        ax[0].set_xlim(0, max(vs) * 1.15)
+        ax[0].legend(fontsize=8)
+    if b:
+        bm = a['binder_migration']
+        ax[1].plot(b['binder_over_mean'], b['z_um'], color='k',
+                   label=f"run's drying rate (Pe {bm['peclet']:.2g}): bottom 10 % {bm['bottom10_over_mean']:.2f}")
+        for key, style in zip([k for k in b if k.startswith('binder_over_mean_rate_x')], ['--', ':', '-.']):
+            f = key.split('_x')[-1]
+            ax[1].plot(b[key], b['z_um'], color='tab:red', ls=style, label=f'drying {f} x as fast')
+        ax[1].axvline(1.0, color='grey', lw=0.8)
+        ax[1].set_xlabel('binder per film volume / its mean / -')
+        ax[1].set_ylabel('height above substrate z / µm')
+        ax[1].set_title('binder after drying (paper Eq. 1, 1D)', fontsize=10)
+        ax[1].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(plots, 'transport.png'), dpi=120)
 print('plots written to', plots)

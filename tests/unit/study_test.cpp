@@ -96,3 +96,28 @@ TEST(Study, RowsComeFromSummariesAndMissingOnesAreFailures) {
     EXPECT_NEAR(j["measured"][0]["thickness_um"].get<double>(), 12.0, 1e-9);
     EXPECT_NEAR(j["loadings"][0]["thickness_mean_um"].get<double>(), 12.5, 1e-12);
 }
+
+TEST(Study, RowsCarryTheRunsTransportAndBinderNumbers) {
+    const auto dir = testing_support::temp_dir();
+    std::ofstream(dir / "summary.json") << R"({"status": "completed", "final_thickness_um": 12.5})";
+    std::filesystem::create_directories(dir / "analysis");
+    std::ofstream(dir / "analysis" / "analysis.json") << R"({"transport": {"tortuosity_factor":
+        {"through_plane": 2.5, "in_plane": 1.8}, "bruggeman_exponent": {"through_plane": null},
+        "electronic_conductivity_S_m": 3.25, "cb_percolates": true},
+        "binder_migration": {"bottom10_over_mean": 0.75}})";
+    const StudyRow r = read_study_row({0.02, 1, "a"}, dir, 0);
+    EXPECT_DOUBLE_EQ(*r.tortuosity_z, 2.5);
+    EXPECT_DOUBLE_EQ(*r.tortuosity_in_plane, 1.8);
+    EXPECT_FALSE(r.bruggeman_z); // null: undefined exponent stays empty
+    EXPECT_DOUBLE_EQ(*r.electronic_conductivity, 3.25);
+    EXPECT_DOUBLE_EQ(*r.cb_percolates, 1.0);
+    EXPECT_DOUBLE_EQ(*r.binder_bottom10, 0.75);
+    Config base;
+    write_study_results(dir, base, {r});
+    std::ifstream csv(dir / "study.csv");
+    std::string header, row;
+    std::getline(csv, header);
+    std::getline(csv, row);
+    EXPECT_NE(header.find("tortuosity_through_plane,tortuosity_in_plane,bruggeman_exponent"), std::string::npos);
+    EXPECT_NE(row.find(",2.5,1.8,,3.25,1,0.75"), std::string::npos) << row;
+}

@@ -44,6 +44,15 @@ std::vector<double> diameter_histogram(const VoxelGrid& g, const std::vector<std
 
 } // namespace
 
+void set_transport_options(AnalysisOptions& o, const Config& c) {
+    o.transport.voxels = c.analysis_transport_voxel_sizes;
+    o.transport.sigma_ncm = c.analysis_ncm_conductivity;
+    o.transport.sigma_cb = c.analysis_cb_conductivity;
+    o.surfaces.points = c.analysis_surface_points;
+    o.surfaces.cb_gap = c.analysis_cb_coverage_gap;
+    o.binder.diffusivity = c.analysis_binder_diffusivity;
+}
+
 AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     auto say = [&](const std::string& m) {
         if (o.log) o.log(m);
@@ -56,6 +65,35 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
     r.bulk = bulk_properties(s, r.profiles.solid(), o.profile_dz);
     r.coordination = coordination(s, o.contact_gap);
+    r.base_area = s.box.area();
+    r.surfaces = ncm_surfaces(s, o.surfaces);
+    // Transport on its own (coarser) voxelizations of the coating below the pore top.
+    if (!o.transport.voxels.empty()) {
+        TransportOptions to = o.transport;
+        to.log = o.log;
+        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
+        r.transport = film_transport(s, coating_top, to);
+    }
+    if (!o.timeseries.empty()) {
+        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
+        const DryingHistory h = read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
+        BinderParams bp = o.binder;
+        if (r.transport) {
+            const TransportLevel& L = r.transport->reported();
+            const double alpha = bruggeman_exponent(L.porosity, L.tau_z);
+            if (alpha >= 1.0 && alpha <= 5.0) bp.bruggeman = alpha;
+        }
+        r.binder = binder_migration(h, bp);
+        say(fmt::format("binder migration: Pe {:.3g}, binder at the substrate (bottom 10 %) {:.3f}, top 10 % {:.3f} "
+                        "of the mean, {} steps",
+                        r.binder->peclet, r.binder->bottom10, r.binder->top10, r.binder->steps));
+        // The same film dried f times faster: the time axis of the history divided by f.
+        for (double f : o.binder_rate_factors) {
+            DryingHistory hf = h;
+            for (double& t : hf.time) t = h.time.front() + (t - h.time.front()) / f;
+            r.binder_rates.emplace_back(f, binder_migration(hf, bp));
+        }
+    }
     if (!(o.voxel > 0.0)) return r;
 
     // Refuse what this machine cannot hold instead of dying in the allocation.

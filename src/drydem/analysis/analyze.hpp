@@ -3,10 +3,13 @@
 // bulk numbers, exact profiles, coordination, and on the voxel image the chord lengths, local
 // thickness and simulated mercury intrusion. A plain value in, a plain value out (no I/O).
 #pragma once
+#include "drydem/analysis/binder_migration.hpp"
 #include "drydem/analysis/bulk.hpp"
 #include "drydem/analysis/chords.hpp"
 #include "drydem/analysis/coordination.hpp"
 #include "drydem/analysis/profiles.hpp"
+#include "drydem/analysis/surfaces.hpp"
+#include "drydem/analysis/transport.hpp"
 #include "drydem/analysis/voxel_grid.hpp"
 #include <array>
 #include <cstdint>
@@ -29,6 +32,16 @@ struct AnalysisOptions {
     /// space of the coating) or "highest" (the paper's thickness).
     std::string pore_top = "half_solid";
     bool keep_grid = false;       ///< hand the voxel image back (for export)
+    /// Tortuosity and conductivities (transport.hpp) on the coating below the pore top; no voxel
+    /// sizes = none.
+    TransportOptions transport;
+    SurfaceOptions surfaces;      ///< NCM surface in contact with electrolyte and CB (surfaces.hpp)
+    /// Binder migration (binder_migration.hpp) from the run's timeseries.csv; empty = none. Its
+    /// Bruggeman exponent is the film's through-plane one when the transport solve gives one in
+    /// [1, 5], else BinderParams::bruggeman.
+    std::string timeseries;
+    BinderParams binder;
+    std::vector<double> binder_rate_factors{0.5, 2.0}; ///< also with the drying this much faster
     std::function<void(const std::string&)> log; ///< progress lines, may be empty
 };
 
@@ -60,8 +73,17 @@ struct AnalysisResult {
     bool distance_saturated = false;   ///< some pore was wider than the 16-bit distance range
     std::size_t memory_bytes = 0;      ///< peak of the voxel work arrays
     std::optional<VoxelGrid> grid;     ///< when keep_grid
+    std::optional<Transport> transport; ///< when transport voxel sizes are given
+    Surfaces surfaces;
+    std::optional<BinderProfile> binder;
+    std::vector<std::pair<double, BinderProfile>> binder_rates; ///< (rate factor, profile)
+    double base_area = 0.0;            ///< periodic x-y base [m^2]
     std::vector<double> seconds;       ///< voxelize, EDT, chords, local thickness, intrusion
 };
+
+/// The transport and surface options of a config (analysis.transport_voxel_sizes, *_conductivity,
+/// surface_points, cb_coverage_gap) into `o`.
+void set_transport_options(AnalysisOptions& o, const Config& c);
 
 [[nodiscard]] AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o);
 

@@ -38,6 +38,9 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
     if (o.cb_type > 0) rule.cb_type = o.cb_type;
     const analysis::Structure s = analysis::structure_from_file(file, c, rule);
     analysis::AnalysisOptions a = o.analysis;
+    // A run folder's snapshot: its time series drives the binder migration model.
+    if (const fs::path ts = o.snapshot.parent_path() / "timeseries.csv"; a.timeseries.empty() && o.snapshot.filename() == "final.csv" && fs::exists(ts))
+        a.timeseries = ts.string();
     a.keep_grid = o.export_voxels || o.tiff;
     if (!o.quiet) a.log = [](const std::string& m) { fmt::print("  {}\n", m); };
     if (a.voxel > 0.0) {
@@ -79,6 +82,20 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
         if (r.distance_saturated)
             fmt::print(stderr, "warning: some pores are wider than 255 voxels; their sizes are cut at that\n");
     }
+    if (r.transport && !r.transport->levels.empty()) {
+        const analysis::TransportLevel& L = r.transport->reported();
+        fmt::print("transport ({:.3g} um voxels, coating below {:.2f} um): tortuosity factor through-plane {:.3f}, "
+                   "in-plane {:.3f} / {:.3f} (x / y), porosity {:.4f}, Bruggeman exponent {:.3f}; electronic "
+                   "conductivity {:.4g} S/m, CB network {}\n",
+                   L.voxel * 1e6, L.nz * L.voxel * 1e6, L.tau_z, L.tau_x, L.tau_y, L.porosity,
+                   analysis::bruggeman_exponent(L.porosity, L.tau_z), L.electronic_z.sigma_eff,
+                   L.cb_z.percolates ? fmt::format("percolates ({:.4g} S/m)", L.cb_z.sigma_eff) : "does not percolate");
+    }
+    if (r.surfaces.computed)
+        fmt::print("NCM surface: {:.3f} wetted by electrolyte, {:.3f} covered by CB (gap {:.3g} um), {:.3f} in NCM "
+                   "contacts\n",
+                   r.surfaces.electrolyte_fraction(), r.surfaces.cb_covered_fraction(), r.surfaces.gap * 1e6,
+                   r.surfaces.total > 0 ? r.surfaces.ncm_contact / r.surfaces.total : 0.0);
     fmt::print("written to {} in {:.1f} s (peak memory {:.0f} MB)\n", o.output_dir.string(), wall,
                double(use.ru_maxrss) / 1024.0);
     return 0;

@@ -555,6 +555,8 @@ DryingResult run_drying(const Config& c, const RunOptions& opt) {
             ao.profile_dz = c.analysis_profile_dz;
             ao.contact_gap = c.analysis_contact_gap;
             ao.pore_top = c.analysis_pore_top;
+            analysis::set_transport_options(ao, c);
+            ao.timeseries = (opt.output_dir / "timeseries.csv").string();
             ao.log = [&](const std::string& m) { log->info("analysis: {}", m); };
             const analysis::Structure st =
                 analysis::structure_from_file(read_particles(opt.output_dir / "final.csv"), c);

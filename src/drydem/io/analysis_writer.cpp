@@ -4,6 +4,7 @@
 #include "drydem/git_hash.hpp"
 #include <fmt/format.h>
 #include <algorithm>
+#include <cmath>
 
 namespace drydem {
 
@@ -70,6 +71,101 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
                           {"local_thickness", r.seconds.at(4)}, {"intrusion", r.seconds.at(5)}};
         j["voxel_memory_mb"] = double(r.memory_bytes) / 1e6;
     }
+    if (r.transport && !r.transport->levels.empty()) {
+        const Transport& t = *r.transport;
+        const TransportLevel& L = t.reported();
+        const double tau_in = 0.5 * (L.tau_x + L.tau_y);
+        auto nan_null = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
+        nlohmann::ordered_json tj;
+        tj["coating_top_um"] = L.nz * L.voxel * 1e6;
+        tj["voxel_size_um"] = L.voxel * 1e6;
+        tj["voxels"] = {L.nx, L.ny, L.nz};
+        tj["porosity"] = L.porosity;
+        tj["pore_percolating_fraction"] = L.pore_z.percolating_fraction;
+        tj["tortuosity_factor"] = {{"through_plane", L.tau_z}, {"in_plane", tau_in}, {"x", L.tau_x}, {"y", L.tau_y}};
+        tj["macmullin_number"] = {{"through_plane", L.tau_z / L.porosity}, {"in_plane", tau_in / L.porosity}};
+        tj["bruggeman_exponent"] = {{"through_plane", nan_null(bruggeman_exponent(L.porosity, L.tau_z))},
+                                    {"in_plane", nan_null(bruggeman_exponent(L.porosity, tau_in))}};
+        tj["ncm_conductivity_S_m"] = t.sigma_ncm;
+        tj["cb_conductivity_S_m"] = t.sigma_cb;
+        tj["electronic_conductivity_S_m"] = L.electronic_z.sigma_eff;
+        tj["solid_percolates"] = L.electronic_z.percolates;
+        tj["cb_percolates"] = L.cb_z.percolates;
+        tj["cb_network_conductivity_S_m"] = L.cb_z.sigma_eff;
+        tj["cb_percolating_fraction_of_cb"] =
+            L.cb_z.conducting_fraction > 0 ? L.cb_z.percolating_fraction / L.cb_z.conducting_fraction : 0.0;
+        bool converged = true;
+        double balance = 0.0;
+        for (const ConductionResult* c : {&L.pore_z, &L.pore_x, &L.pore_y, &L.electronic_z, &L.cb_z}) {
+            if (c->unknowns == 0) continue;
+            converged = converged && c->converged;
+            balance = std::max(balance, c->flux_balance);
+        }
+        if (L.walk.walkers > 0) {
+            auto tau = [&](int d) { return L.walk.diffusivity[d] > 0 ? 1.0 / L.walk.diffusivity[d] : 0.0; };
+            auto err = [&](int d) {
+                const double D = L.walk.diffusivity[d];
+                return D > 0 ? L.walk.standard_error[d] / (D * D) : 0.0;
+            };
+            tj["random_walk"] = {{"method", "blind-ant walks in the pores, x, y periodic (second method)"},
+                                 {"walkers", L.walk.walkers},
+                                 {"steps", L.walk.steps},
+                                 {"tortuosity_x", tau(0)},
+                                 {"tortuosity_x_standard_error", err(0)},
+                                 {"tortuosity_y", tau(1)},
+                                 {"tortuosity_y_standard_error", err(1)},
+                                 {"seconds", L.walk.seconds}};
+        }
+        tj["solver"] = {{"method", std::string("Eigen ConjugateGradient, ") + L.pore_z.preconditioner + " preconditioner"},
+                        {"converged", converged},
+                        {"max_flux_balance", balance}};
+        nlohmann::ordered_json conv = nlohmann::ordered_json::array();
+        for (const TransportLevel& l : t.levels)
+            conv.push_back({{"voxel_size_um", l.voxel * 1e6},
+                            {"voxels", {l.nx, l.ny, l.nz}},
+                            {"porosity", l.porosity},
+                            {"tortuosity_through_plane", l.tau_z},
+                            {"tortuosity_x", l.tau_x},
+                            {"tortuosity_y", l.tau_y},
+                            {"electronic_conductivity_S_m", l.electronic_z.sigma_eff},
+                            {"cb_percolates", l.cb_z.percolates},
+                            {"cg_iterations_through_plane", l.pore_z.iterations},
+                            {"seconds", l.seconds},
+                            {"memory_mb", double(l.memory_bytes) / 1e6}});
+        tj["convergence"] = conv;
+        j["transport"] = tj;
+    }
+    if (r.surfaces.computed) {
+        const Surfaces& a = r.surfaces;
+        const double volume = r.bulk.thickness * r.base_area;
+        j["ncm_surface"] = {
+            {"cb_coverage_gap_um", a.gap * 1e6},
+            {"total_um2", a.total * 1e12},
+            {"electrolyte_fraction", a.electrolyte_fraction()},
+            {"cb_covered_fraction", a.cb_covered_fraction()},
+            {"cb_overlap_fraction", a.total > 0 ? a.cb_overlap / a.total : 0.0},
+            {"ncm_contact_fraction", a.total > 0 ? a.ncm_contact / a.total : 0.0},
+            {"substrate_fraction", a.total > 0 ? a.substrate / a.total : 0.0},
+            {"specific_surface_electrolyte_per_um", volume > 0 ? a.electrolyte / volume * 1e-6 : 0.0},
+            {"specific_surface_electrolyte_m2_g", r.bulk.mass.ncm > 0 ? a.electrolyte / (r.bulk.mass.ncm * 1e3) : 0.0}};
+    }
+    if (r.binder) {
+        const BinderProfile& b = *r.binder;
+        nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+        rates.push_back({{"rate_factor", 1.0}, {"peclet", b.peclet}, {"bottom10", b.bottom10}, {"top10", b.top10}});
+        for (const auto& [f, bf] : r.binder_rates)
+            rates.push_back({{"rate_factor", f}, {"peclet", bf.peclet}, {"bottom10", bf.bottom10}, {"top10", bf.top10}});
+        j["binder_migration"] = {{"model", "paper Eq. 1, 1D convection-diffusion (docs/analysis.md)"},
+                                 {"diffusivity_m2_s", o.binder.diffusivity},
+                                 {"evaporation_velocity_um_s", b.evaporation_rate * 1e6},
+                                 {"peclet", b.peclet},
+                                 {"consolidation_time_s", b.consolidation_time},
+                                 {"end_time_s", b.end_time},
+                                 {"bottom10_over_mean", b.bottom10},
+                                 {"top10_over_mean", b.top10},
+                                 {"mass_balance", b.mass_balance},
+                                 {"drying_rate_factors", rates}};
+    }
     j["version"] = DRYDEM_VERSION;
     j["git_commit"] = DRYDEM_GIT_HASH;
     return j;
@@ -91,6 +187,29 @@ void write_analysis(const std::filesystem::path& dir, const AnalysisResult& r, c
                               p.pore[k], p.pore_total[k], p.ncm[k] + p.cb_envelope[k]);
         }
     });
+    if (r.transport)
+        write_file_atomically(dir / "transport_convergence.csv", [&](std::ostream& os) {
+            os << "voxel_size_um,nx,ny,nz,porosity,tortuosity_z,tortuosity_x,tortuosity_y,macmullin_z,"
+                  "bruggeman_z,electronic_conductivity_S_m,cb_network_conductivity_S_m,cb_percolates,"
+                  "cg_iterations_z,seconds,memory_mb\n";
+            for (const TransportLevel& l : r.transport->levels)
+                os << fmt::format("{:.6g},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.3g},{:.4g}\n",
+                                  l.voxel * 1e6, l.nx, l.ny, l.nz, l.porosity, l.tau_z, l.tau_x, l.tau_y,
+                                  l.tau_z / l.porosity, bruggeman_exponent(l.porosity, l.tau_z),
+                                  l.electronic_z.sigma_eff, l.cb_z.sigma_eff, l.cb_z.percolates ? 1 : 0,
+                                  l.pore_z.iterations, l.seconds, double(l.memory_bytes) / 1e6);
+        });
+    if (r.binder)
+        write_file_atomically(dir / "binder_profile.csv", [&](std::ostream& os) {
+            os << "z_um,binder_over_mean";
+            for (const auto& fr : r.binder_rates) os << fmt::format(",binder_over_mean_rate_x{:g}", fr.first);
+            os << "\n";
+            for (std::size_t i = 0; i < r.binder->z.size(); ++i) {
+                os << fmt::format("{:.6g},{:.6g}", r.binder->z[i] * 1e6, r.binder->binder[i]);
+                for (const auto& fr : r.binder_rates) os << fmt::format(",{:.6g}", fr.second.binder[i]);
+                os << "\n";
+            }
+        });
     if (!r.voxelized) return;
     const double a = r.voxel * 1e6;
     write_file_atomically(dir / "psd_chord.csv", [&](std::ostream& os) {

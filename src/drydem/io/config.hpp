@@ -119,6 +119,14 @@ struct Config {
     double analysis_profile_dz = 0.5e-6;  ///< slab width of the height profiles [m]
     double analysis_contact_gap = 0.0;    ///< coordination: surface gap counted as contact [m]
     std::string analysis_pore_top = "half_solid"; ///< "half_solid" | "highest"
+    /// Transport (docs/analysis.md): voxel sizes of the tortuosity / conductivity solves, the last
+    /// one reported; empty = none.
+    std::vector<double> analysis_transport_voxel_sizes = {0.4e-6, 0.2e-6};
+    double analysis_ncm_conductivity = 1.0e-2; ///< electronic conductivity of NCM [S/m]
+    double analysis_cb_conductivity = 100.0;   ///< electronic conductivity of a CB agglomerate [S/m]
+    int analysis_surface_points = 400;         ///< points per NCM sphere of the surface split; 0 = none
+    double analysis_cb_coverage_gap = 0.1e-6;  ///< NCM surface within this of a CB surface is covered [m]
+    double analysis_binder_diffusivity = 6.5e-12; ///< D₀ of dissolved PVDF in NMP [m²/s] (Stokes–Einstein)
 
     // [output]
     double timeseries_every = 0.5;       ///< [s physical]

@@ -128,6 +128,13 @@ voxel_size = "0.1 um"            # voxel edge of the pore analysis; 0 = only thi
 profile_dz = "0.5 um"            # slab width of the height profiles
 contact_gap = "0 um"             # coordination: surface gap still counted as a contact (0 = touching)
 pore_top = "half_solid"          # pore statistics below the half-solid height ("highest": below the highest top)
+transport_voxel_sizes = ["0.4 um", "0.2 um"]  # tortuosity / conductivity solves, one voxelization each
+                                 # (the list shows the voxel-size convergence; the last is reported); [] = none
+ncm_conductivity = 0.01          # electronic conductivity of NCM [S/m] (an input: lithiated NCM622 ~1e-4..1e-1)
+cb_conductivity = 100            # electronic conductivity of a CB agglomerate, carbon + binder + pores [S/m]
+surface_points = 400             # points per NCM sphere for its surface split (0 = none)
+cb_coverage_gap = "0.1 um"       # NCM surface within this distance of a CB agglomerate counts as covered
+binder_diffusivity = 6.5e-12     # dissolved PVDF in NMP [m^2/s]: Stokes-Einstein, 20 nm, 1.67 mPa s, 298 K (binder migration)
 
 [output]
 timeseries_every = "0.5 s"       # physical time between time-series rows

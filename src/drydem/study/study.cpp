@@ -54,6 +54,28 @@ StudyRow read_study_row(const StudyCase& c, const std::filesystem::path& run_dir
         row.status = "failed";
         row.error = fmt::format("unreadable summary.json: {}", e.what());
     }
+    // The film's transport and binder numbers, where the run's analysis has them.
+    if (std::ifstream an(run_dir / "analysis" / "analysis.json"); an) try {
+            const nlohmann::json a = nlohmann::json::parse(an);
+            auto at = [&](std::initializer_list<const char*> path) -> std::optional<double> {
+                const nlohmann::json* v = &a;
+                for (const char* k : path) {
+                    if (!v->is_object() || !v->contains(k)) return std::nullopt;
+                    v = &(*v)[k];
+                }
+                if (v->is_boolean()) return v->get<bool>() ? 1.0 : 0.0;
+                if (v->is_number()) return v->get<double>();
+                return std::nullopt;
+            };
+            row.tortuosity_z = at({"transport", "tortuosity_factor", "through_plane"});
+            row.tortuosity_in_plane = at({"transport", "tortuosity_factor", "in_plane"});
+            row.bruggeman_z = at({"transport", "bruggeman_exponent", "through_plane"});
+            row.electronic_conductivity = at({"transport", "electronic_conductivity_S_m"});
+            row.cb_percolates = at({"transport", "cb_percolates"});
+            row.binder_bottom10 = at({"binder_migration", "bottom10_over_mean"});
+        } catch (const std::exception&) {
+            // an unreadable analysis leaves the columns empty; the run itself stands
+        }
     return row;
 }
 
@@ -105,12 +127,14 @@ void write_study_results(const std::filesystem::path& dir, const Config& base,
     };
     write_file_atomically(dir / "study.csv", [&](std::ostream& o) {
         o << "areal_loading_mg_cm2,seed,status,final_thickness_um,density_g_cm3,porosity,"
-             "process_time_final_s,wall_time_s,run_dir,error\n";
+             "process_time_final_s,wall_time_s,run_dir,error,tortuosity_through_plane,tortuosity_in_plane,"
+             "bruggeman_exponent,electronic_conductivity_S_m,cb_percolates,binder_bottom10_over_mean\n";
         for (const auto& r : rows)
-            o << fmt::format("{:.10g},{},{},{},{},{},{},{:.4g},runs/{},{}\n", r.c.areal_loading * 100.0,
+            o << fmt::format("{:.10g},{},{},{},{},{},{},{:.4g},runs/{},{},{},{},{},{},{},{}\n", r.c.areal_loading * 100.0,
                              r.c.seed, r.status, opt(r.thickness_um), opt(r.density_g_cm3),
                              opt(r.porosity), opt(r.process_time_final_s), r.wall_time_s, r.c.name,
-                             csv_text(r.error));
+                             csv_text(r.error), opt(r.tortuosity_z), opt(r.tortuosity_in_plane), opt(r.bruggeman_z),
+                             opt(r.electronic_conductivity), opt(r.cb_percolates), opt(r.binder_bottom10));
     });
     nlohmann::json j;
     j["name"] = base.name;
@@ -125,6 +149,12 @@ void write_study_results(const std::filesystem::path& dir, const Config& base,
                               {"porosity", jopt(r.porosity)},
                               {"process_time_final_s", jopt(r.process_time_final_s)},
                               {"wall_time_s", r.wall_time_s},
+                              {"tortuosity_through_plane", jopt(r.tortuosity_z)},
+                              {"tortuosity_in_plane", jopt(r.tortuosity_in_plane)},
+                              {"bruggeman_exponent", jopt(r.bruggeman_z)},
+                              {"electronic_conductivity_S_m", jopt(r.electronic_conductivity)},
+                              {"cb_percolates", jopt(r.cb_percolates)},
+                              {"binder_bottom10_over_mean", jopt(r.binder_bottom10)},
                               {"run_dir", "runs/" + r.c.name}});
     for (const auto& s : study_statistics(rows))
         j["loadings"].push_back({{"areal_loading_mg_cm2", s.areal_loading_mg_cm2},

@@ -30,6 +30,11 @@ struct StudyRow {
     std::string error;
     std::optional<double> thickness_um, density_g_cm3, porosity, process_time_final_s;
     double wall_time_s = 0.0;
+    /// From the run's analysis/analysis.json where it has them (docs/analysis.md): tortuosity factor
+    /// through-plane and in-plane, Bruggeman exponent, electronic conductivity [S/m], CB percolation
+    /// (1/0), binder in the bottom 10 % of the film over the mean.
+    std::optional<double> tortuosity_z, tortuosity_in_plane, bruggeman_z, electronic_conductivity, cb_percolates,
+        binder_bottom10;
 };
 
 /// Reads `run_dir/summary.json` (missing or unreadable: status "failed" with the reason).

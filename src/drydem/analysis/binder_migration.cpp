@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/analysis/binder_migration.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace drydem::analysis {
+
+namespace {
+
+/// Liquid level at t: linear between the rows, after the last row on at the last rate.
+struct Level {
+    const DryingHistory& h;
+    double late_rate; ///< dh/dt after the last row (< 0)
+    double operator()(double t) const {
+        const auto& T = h.time;
+        if (t >= T.back()) return h.liquid_level.back() + late_rate * (t - T.back());
+        const auto it = std::upper_bound(T.begin(), T.end(), t);
+        if (it == T.begin()) return h.liquid_level.front();
+        const std::size_t k = std::size_t(it - T.begin());
+        const double w = (t - T[k - 1]) / (T[k] - T[k - 1]);
+        return (1.0 - w) * h.liquid_level[k - 1] + w * h.liquid_level[k];
+    }
+};
+
+} // namespace
+
+BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
+    if (h.time.size() < 2 || h.time.size() != h.liquid_level.size())
+        throw InputError("binder migration: the history needs at least two (time, liquid level) rows");
+    if (!(h.final_height > 0.0) || !(h.dz > 0.0) || h.porosity.empty())
+        throw InputError("binder migration: final height, slab width and porosity profile must be given");
+    if (!(p.diffusivity >= 0.0) || p.cells < 4 || !(p.residual_saturation > 0.0 && p.residual_saturation < 1.0))
+        throw InputError("binder migration: diffusivity >= 0, cells >= 4, residual saturation in (0, 1)");
+    const int n = p.cells;
+    const double Hf = h.final_height, dxi = 1.0 / n;
+    // ε_f averaged over each cell of the final film (slab profile, piecewise constant).
+    std::vector<double> eps(std::size_t(n), 0.0);
+    for (int i = 0; i < n; ++i) {
+        const double a = i * dxi * Hf, b = (i + 1) * dxi * Hf;
+        double acc = 0.0;
+        for (std::size_t k = std::size_t(a / h.dz); k < h.porosity.size() && k * h.dz < b; ++k) {
+            const double lo = std::max(a, k * h.dz), hi = std::min(b, (k + 1) * h.dz);
+            if (hi > lo) acc += (hi - lo) * std::clamp(h.porosity[k], 0.0, 1.0);
+        }
+        const double covered = std::min(b, h.porosity.size() * h.dz) - a;
+        eps[std::size_t(i)] = covered > 0 ? acc / covered : 1.0;
+        eps[std::size_t(i)] = std::max(eps[std::size_t(i)], 1e-3);
+    }
+    double pore_volume = 0.0; // ∫₀^H ε_f dz
+    for (double e : eps) pore_volume += e * dxi * Hf;
+
+    // The level after the run: its last descent rate, else the mean shrinkage rate.
+    const std::size_t last = h.time.size() - 1;
+    double late = (h.liquid_level[last] - h.liquid_level[last - 1]) / (h.time[last] - h.time[last - 1]);
+    const double mean_rate = (h.liquid_level[last] - h.liquid_level[0]) / (h.time[last] - h.time[0]);
+    if (!(late < 0.0)) late = mean_rate;
+    if (!(late < 0.0)) throw InputError("binder migration: the liquid level does not descend");
+    const Level level{h, late};
+
+    BinderProfile out;
+    // Solvent fraction per cell and domain height at time t; S the saturation (1 while shrinking).
+    auto state = [&](double t, std::vector<double>& theta, double& height, double& S) {
+        const double lv = level(t);
+        if (lv > Hf) {
+            height = lv;
+            S = 1.0;
+            for (int i = 0; i < n; ++i) theta[std::size_t(i)] = 1.0 - (1.0 - eps[std::size_t(i)]) * Hf / lv;
+        } else {
+            height = Hf;
+            double liquid = 0.0; // ∫₀^level ε_f dz
+            for (int i = 0; i < n; ++i) {
+                const double a = i * dxi * Hf, b = (i + 1) * dxi * Hf;
+                if (lv > a) liquid += eps[std::size_t(i)] * (std::min(lv, b) - a);
+            }
+            S = std::max(0.0, liquid / pore_volume);
+            for (int i = 0; i < n; ++i) theta[std::size_t(i)] = eps[std::size_t(i)] * S;
+        }
+    };
+    const std::size_t N = static_cast<std::size_t>(n);
+    std::vector<double> th0(N), th1(N), m(N), c(N), G(N + 1), r(N), lo(N), di(N), up(N);
+    double t = h.time.front(), H0 = 0.0, H1 = 0.0, S0 = 1.0, S1 = 1.0;
+    state(t, th0, H0, S0);
+    const double h_start = H0;
+    for (int i = 0; i < n; ++i) m[std::size_t(i)] = th0[std::size_t(i)] * H0 * dxi; // c₀ = 1
+    double mass0 = 0.0;
+    for (double v : m) mass0 += v;
+    out.consolidation_time = h_start > Hf ? -1.0 : t;
+    const double alpha = p.bruggeman;
+    int steps = 0;
+    while (S0 > p.residual_saturation) {
+        if (++steps > 50000000) throw InputError("binder migration: no end after 5e7 steps");
+        double dt = p.max_step;
+        for (int attempt = 0;; ++attempt) {
+            state(t + dt, th1, H1, S1);
+            // Face-relative solvent flux from the change of each cell's solvent volume (upward +).
+            G[0] = 0.0;
+            for (int i = 0; i < n; ++i)
+                G[std::size_t(i) + 1] =
+                    G[std::size_t(i)] - (th1[std::size_t(i)] * H1 - th0[std::size_t(i)] * H0) * dxi / dt;
+            bool ok = true;
+            for (int i = 1; i < n && ok; ++i) {
+                const double g = G[std::size_t(i)];
+                const double donor = g > 0 ? th0[std::size_t(i) - 1] : th0[std::size_t(i)];
+                ok = std::abs(g) * dt <= p.cfl * donor * H0 * dxi;
+            }
+            if (ok || attempt > 60) break;
+            dt *= 0.5;
+        }
+        // Explicit upwind convection of the dissolved binder; the top face lets only solvent out.
+        for (int i = 0; i < n; ++i) c[std::size_t(i)] = m[std::size_t(i)] / (th0[std::size_t(i)] * H0 * dxi);
+        for (int i = 0; i < n; ++i) r[std::size_t(i)] = m[std::size_t(i)];
+        for (int i = 1; i < n; ++i) {
+            const double g = G[std::size_t(i)];
+            const double flux = dt * g * (g > 0 ? c[std::size_t(i) - 1] : c[std::size_t(i)]);
+            r[std::size_t(i) - 1] -= flux;
+            r[std::size_t(i)] += flux;
+        }
+        // Implicit diffusion: flux per area D₀ θ^α ∂c/∂z on the new grid.
+        const double dz = H1 * dxi;
+        for (int i = 0; i < n; ++i) {
+            lo[std::size_t(i)] = up[std::size_t(i)] = 0.0;
+            di[std::size_t(i)] = th1[std::size_t(i)] * H1 * dxi;
+        }
+        for (int i = 0; i + 1 < n; ++i) {
+            const double tf = 0.5 * (th1[std::size_t(i)] + th1[std::size_t(i) + 1]);
+            const double k = dt * p.diffusivity * std::pow(tf, alpha) / dz;
+            di[std::size_t(i)] += k;
+            di[std::size_t(i) + 1] += k;
+            up[std::size_t(i)] = -k;
+            lo[std::size_t(i) + 1] = -k;
+        }
+        // Thomas algorithm.
+        for (int i = 1; i < n; ++i) {
+            const double w = lo[std::size_t(i)] / di[std::size_t(i) - 1];
+            di[std::size_t(i)] -= w * up[std::size_t(i) - 1];
+            r[std::size_t(i)] -= w * r[std::size_t(i) - 1];
+        }
+        c[std::size_t(n) - 1] = r[std::size_t(n) - 1] / di[std::size_t(n) - 1];
+        for (int i = n - 2; i >= 0; --i)
+            c[std::size_t(i)] = (r[std::size_t(i)] - up[std::size_t(i)] * c[std::size_t(i) + 1]) / di[std::size_t(i)];
+        for (int i = 0; i < n; ++i) m[std::size_t(i)] = c[std::size_t(i)] * th1[std::size_t(i)] * H1 * dxi;
+        if (out.consolidation_time < 0.0 && H1 <= Hf) out.consolidation_time = t + dt;
+        t += dt;
+        std::swap(th0, th1);
+        H0 = H1;
+        S0 = S1;
+    }
+    double mass = 0.0;
+    for (double v : m) mass += v;
+    out.mass_balance = std::abs(mass - mass0) / mass0;
+    out.end_time = t;
+    out.steps = steps;
+    out.z.resize(std::size_t(n));
+    out.binder.resize(std::size_t(n));
+    for (int i = 0; i < n; ++i) {
+        out.z[std::size_t(i)] = (i + 0.5) * dxi * Hf;
+        out.binder[std::size_t(i)] = m[std::size_t(i)] * n / mass;
+    }
+    const int tenth = std::max(1, int(std::lround(0.1 * n)));
+    for (int i = 0; i < tenth; ++i) {
+        out.bottom10 += out.binder[std::size_t(i)] / tenth;
+        out.top10 += out.binder[std::size_t(n - 1 - i)] / tenth;
+    }
+    if (out.consolidation_time > h.time.front() && h_start > Hf) {
+        out.evaporation_rate = (h_start - Hf) / (out.consolidation_time - h.time.front());
+        out.peclet = p.diffusivity > 0 ? out.evaporation_rate * h_start / p.diffusivity : INFINITY;
+    } else {
+        out.evaporation_rate = -late;
+        out.peclet = p.diffusivity > 0 ? -late * Hf / p.diffusivity : INFINITY;
+    }
+    return out;
+}
+
+DryingHistory read_drying_history(const std::string& timeseries_csv, double final_height, double dz,
+                                  const std::vector<double>& porosity) {
+    std::ifstream in(timeseries_csv);
+    if (!in) throw InputError(fmt::format("binder migration: cannot read {}", timeseries_csv));
+    std::string line;
+    std::getline(in, line);
+    int col_t = -1, col_h = -1, col = 0;
+    {
+        std::stringstream ss(line);
+        std::string name;
+        while (std::getline(ss, name, ',')) {
+            if (name == "process_time_s") col_t = col;
+            if (name == "liquid_level_um") col_h = col;
+            ++col;
+        }
+    }
+    if (col_t < 0 || col_h < 0)
+        throw InputError(fmt::format("{}: no process_time_s / liquid_level_um columns", timeseries_csv));
+    DryingHistory h;
+    h.final_height = final_height;
+    h.dz = dz;
+    h.porosity = porosity;
+    while (std::getline(in, line)) {
+        std::stringstream ss(line);
+        std::string cell;
+        double t = NAN, lv = NAN;
+        for (int k = 0; std::getline(ss, cell, ','); ++k) {
+            if (k == col_t) t = std::stod(cell);
+            if (k == col_h) lv = std::stod(cell) * 1e-6;
+        }
+        if (!std::isfinite(t) || !std::isfinite(lv)) continue;
+        if (!h.time.empty() && t <= h.time.back()) continue;
+        h.time.push_back(t);
+        h.liquid_level.push_back(lv);
+    }
+    return h;
+}
+
+} // namespace drydem::analysis

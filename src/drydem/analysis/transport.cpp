@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/analysis/transport.hpp"
+#include "drydem/analysis/voxel_grid.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace drydem::analysis {
+
+double tortuosity_factor(double porosity, double sigma_eff) {
+    return sigma_eff > 0.0 ? porosity / sigma_eff : 0.0;
+}
+
+double bruggeman_exponent(double porosity, double tau) {
+    if (!(porosity > 0.0 && porosity < 1.0 && tau > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    return 1.0 - std::log(tau) / std::log(porosity);
+}
+
+namespace {
+
+ConductionProblem problem_of(const VoxelGrid& g, int axis, double tolerance) {
+    ConductionProblem p;
+    p.nx = g.nx;
+    p.ny = g.ny;
+    p.nz = g.nz;
+    p.ax = g.ax;
+    p.ay = g.ay;
+    p.az = g.az;
+    p.axis = axis;
+    // x, y periodic (the box); z closed (substrate below, the cut top plane above) unless it is the axis.
+    p.periodic = {true, true, false};
+    p.tolerance = tolerance;
+    return p;
+}
+
+} // namespace
+
+Transport film_transport(const Structure& s, double top, const TransportOptions& o) {
+    Transport t;
+    t.top = top;
+    t.sigma_ncm = o.sigma_ncm;
+    t.sigma_cb = o.sigma_cb;
+    if (!(top > 0.0)) throw InputError(fmt::format("transport: coating top {} m must be positive", top));
+    if (!(o.sigma_ncm >= 0.0) || !(o.sigma_cb >= 0.0))
+        throw InputError("transport: the NCM and CB conductivities must be >= 0");
+    auto say = [&](const std::string& m) {
+        if (o.log) o.log(m);
+    };
+    for (double a : o.voxels) {
+        const auto t0 = std::chrono::steady_clock::now();
+        TransportLevel L;
+        const VoxelGrid g = voxelize(s, a, top);
+        L.voxel = g.az;
+        L.nx = g.nx;
+        L.ny = g.ny;
+        L.nz = g.nz;
+        const std::size_t nv = g.size();
+        ConductionProblem p = problem_of(g, 2, o.tolerance);
+        p.sigma.resize(nv);
+        std::size_t pores = 0;
+        for (std::size_t i = 0; i < nv; ++i) {
+            const bool pore = g.label[i] == label_pore;
+            pores += pore;
+            p.sigma[i] = pore ? 1.0f : 0.0f;
+        }
+        L.porosity = double(pores) / double(nv);
+        std::size_t peak = 0;
+        auto solve = [&](int axis, const char* what) {
+            p.axis = axis;
+            ConductionResult r = solve_conduction(p);
+            peak = std::max(peak, r.memory_bytes);
+            say(fmt::format("transport {:.3g} um, {}: sigma_eff {:.5g}, {} unknowns, {} CG iterations{}, {:.1f} s",
+                            a * 1e6, what, r.sigma_eff, r.unknowns, r.iterations, r.converged ? "" : " (NOT converged)",
+                            r.seconds));
+            return r;
+        };
+        L.pore_z = solve(2, "pores through-plane");
+        L.tau_z = tortuosity_factor(L.porosity, L.pore_z.sigma_eff);
+        if (o.in_plane) {
+            L.pore_x = solve(0, "pores in-plane x");
+            L.pore_y = solve(1, "pores in-plane y");
+            L.tau_x = tortuosity_factor(L.porosity, L.pore_x.sigma_eff);
+            L.tau_y = tortuosity_factor(L.porosity, L.pore_y.sigma_eff);
+        }
+        if (o.walkers > 0 && o.walk_steps > 0 && a == o.voxels.back()) {
+            p.periodic = {true, true, false};
+            L.walk = random_walk(p, o.walkers, o.walk_steps);
+            say(fmt::format("transport {:.3g} um, random walks in the pores: tau x {:.4g} +- {:.2g}, y {:.4g} +- {:.2g} "
+                            "({} walkers x {} steps, {:.1f} s)",
+                            a * 1e6, 1.0 / L.walk.diffusivity[0],
+                            L.walk.standard_error[0] / (L.walk.diffusivity[0] * L.walk.diffusivity[0]),
+                            1.0 / L.walk.diffusivity[1],
+                            L.walk.standard_error[1] / (L.walk.diffusivity[1] * L.walk.diffusivity[1]), o.walkers,
+                            o.walk_steps, L.walk.seconds));
+        }
+        for (std::size_t i = 0; i < nv; ++i)
+            p.sigma[i] = g.label[i] == label_ncm ? float(o.sigma_ncm) : g.label[i] == label_cb ? float(o.sigma_cb) : 0.0f;
+        L.electronic_z = solve(2, "solid (NCM + CB) through-plane");
+        for (std::size_t i = 0; i < nv; ++i) p.sigma[i] = g.label[i] == label_cb ? float(o.sigma_cb) : 0.0f;
+        L.cb_z = solve(2, "CB network through-plane");
+        L.memory_bytes = peak + nv; // + the labels
+        L.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        t.levels.push_back(L);
+    }
+    return t;
+}
+
+} // namespace drydem::analysis

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Transport properties of the dried film on its voxel image (docs/analysis.md, "Transport"):
+//   tortuosity factor of the pore phase   τ = ε D₀ / D_eff            (TauFactor, Cooper et al. 2016)
+//   MacMullin number                      N_M = D₀ / D_eff = τ / ε
+//   implied Bruggeman exponent            τ = ε^(1−α)  ⇔  α = 1 − ln τ / ln ε
+//   effective electronic conductivity     σ_eff of the solid (NCM σ_NCM, CB σ_CB) through-plane
+//   CB percolation                        a face-connected CB voxel cluster joins substrate and top
+// all from steady conduction solves (conduction.hpp) on the coating z ∈ [0, top) — top the pore top of
+// the analysis (the half-solid height by default): through-plane (z, periodic x, y, the substrate and
+// the top plane as the fixed faces) and in-plane (x and y, cut open at the box side, periodic in the
+// other in-plane axis, closed at substrate and top). Each voxel size of the list is a separate
+// voxelization of the spheres, so the list shows the convergence in voxel size.
+#pragma once
+#include "drydem/analysis/conduction.hpp"
+#include "drydem/analysis/random_walk.hpp"
+#include "drydem/analysis/structure.hpp"
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace drydem::analysis {
+
+struct TransportOptions {
+    std::vector<double> voxels{0.4e-6, 0.2e-6}; ///< voxel edges [m]; the last one is reported; empty = none
+    double sigma_ncm = 1.0e-2;  ///< electronic conductivity of NCM [S/m] (input)
+    double sigma_cb = 100.0;    ///< electronic conductivity of a CB agglomerate (carbon + binder + pores) [S/m] (input)
+    double tolerance = 1e-7;    ///< CG relative residual
+    bool in_plane = true;       ///< also τ along x and y
+    /// Second method at the reported voxel size: random walks in the pores, in-plane (x, y
+    /// periodic, substrate and top walls; random_walk.hpp). 0 walkers = none.
+    long walkers = 20000, walk_steps = 20000;
+    std::function<void(const std::string&)> log;
+};
+
+/// All solves at one voxel size.
+struct TransportLevel {
+    double voxel = 0.0;                 ///< [m]
+    int nx = 0, ny = 0, nz = 0;
+    double porosity = 0.0;              ///< pore voxels / voxels of the coating
+    double tau_z = 0.0, tau_x = 0.0, tau_y = 0.0; ///< tortuosity factors (0 where the pores do not percolate)
+    ConductionResult pore_z, pore_x, pore_y;
+    ConductionResult electronic_z;      ///< NCM + CB with their conductivities
+    ConductionResult cb_z;              ///< CB alone (σ_CB), for the percolation of the CB network
+    RandomWalkResult walk;              ///< in the pores, at the reported (last) level only
+    double seconds = 0.0;               ///< voxelization and all solves
+    std::size_t memory_bytes = 0;       ///< peak of one solve plus the image
+};
+
+struct Transport {
+    std::vector<TransportLevel> levels; ///< in the order of the options' voxel list
+    double top = 0.0;                   ///< top of the solved coating [m]
+    double sigma_ncm = 0.0, sigma_cb = 0.0;
+    [[nodiscard]] const TransportLevel& reported() const { return levels.back(); }
+};
+
+/// τ = ε D₀/D_eff from σ_eff of a pore phase with σ = 1 inside (D₀ = 1): 0 when it does not percolate.
+[[nodiscard]] double tortuosity_factor(double porosity, double sigma_eff);
+/// α of τ = ε^(1−α); NaN where ε or τ make it undefined (ε ∉ (0, 1), τ ≤ 0).
+[[nodiscard]] double bruggeman_exponent(double porosity, double tau);
+
+[[nodiscard]] Transport film_transport(const Structure& s, double top, const TransportOptions& o);
+
+} // namespace drydem::analysis
