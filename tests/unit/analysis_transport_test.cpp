@@ -210,6 +210,7 @@ TEST(Transport, ColumnOfCbSpheresPercolatesAndFilmPoresAreConnected) {
     o.voxels = {0.4e-6, 0.2e-6};
     o.sigma_cb = 100.0;
     o.sigma_ncm = 0.0;
+    o.walkers = 0; // the random walks have their own tests
     const Transport t = film_transport(s, 6e-6, o);
     ASSERT_EQ(t.levels.size(), 2u);
     const TransportLevel& L = t.reported();

@@ -10,8 +10,8 @@
 // their half voxels, 2 σp σq / (σp + σq) × (face area / voxel edge) — exact for layered media — and
 // a voxel on a fixed face connects to it over half a voxel, 2 σ × face area / edge.
 // Only voxels in clusters that touch both faces carry current; the others are left out before the
-// solve (they would make the matrix singular). Solved with Eigen's ConjugateGradient,
-// preconditioned by an incomplete Cholesky factor (Jacobi where that breaks down).
+// solve (they would make the matrix singular). Solved with Eigen's ConjugateGradient and a Jacobi
+// preconditioner.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -40,7 +40,7 @@ struct ConductionResult {
     int iterations = 0;
     double residual = 0.0;           ///< CG's estimate of the relative residual
     bool converged = false;
-    const char* preconditioner = "";  ///< "incomplete Cholesky", or "Jacobi" where it broke down
+    const char* preconditioner = "";  ///< "Jacobi"
     std::size_t memory_bytes = 0;    ///< masks, matrix and CG vectors
     double seconds = 0.0;
 };

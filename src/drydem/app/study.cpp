@@ -132,7 +132,7 @@ int run_study(const Config& base, const StudyOptions& o) {
         write_study_results(o.output_dir, base, rows); // a partial table survives a killed study
     }
     for (std::size_t k = next; k < cases.size(); ++k)
-        rows[k] = StudyRow{cases[k], "not started", "the study was stopped", {}, {}, {}, {}, 0.0};
+        rows[k] = StudyRow{cases[k], "not started", "the study was stopped", {}, {}, {}, {}, 0.0, {}, {}, {}, {}, {}, {}};
     write_study_results(o.output_dir, base, rows);
     for (const auto& s : study_statistics(rows))
         say(fmt::format("{:7.2f} mg/cm2: {} ok, {} failed; thickness {:.3f} +- {:.3f} um, density "

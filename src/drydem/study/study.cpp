@@ -26,7 +26,7 @@ std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>&
 }
 
 StudyRow read_study_row(const StudyCase& c, const std::filesystem::path& run_dir, int exit_code) {
-    StudyRow row{c, "failed", "", {}, {}, {}, {}, 0.0};
+    StudyRow row{c, "failed", "", {}, {}, {}, {}, 0.0, {}, {}, {}, {}, {}, {}};
     std::ifstream in(run_dir / "summary.json");
     if (!in) {
         row.error = fmt::format("no summary.json (exit code {}; see {})", exit_code,
