@@ -88,6 +88,8 @@ def mutate_config(rng, text):
     """A broken copy of the default configuration."""
     lines = text.splitlines()
     for _ in range(rng.randint(1, 4)):
+        if not lines:  # an earlier mutation removed every line
+            lines = [""]
         kind = rng.randrange(7)
         i = rng.randrange(len(lines))
         if kind == 0:

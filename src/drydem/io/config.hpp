@@ -121,7 +121,7 @@ struct Config {
     std::string analysis_pore_top = "half_solid"; ///< "half_solid" | "highest"
     /// Transport (docs/analysis.md): voxel sizes of the tortuosity / conductivity solves, the last
     /// one reported; empty = none.
-    std::vector<double> analysis_transport_voxel_sizes = {0.4e-6, 0.2e-6};
+    std::vector<double> analysis_transport_voxel_sizes = {}; ///< empty = no transport solves
     double analysis_ncm_conductivity = 1.0e-2; ///< electronic conductivity of NCM [S/m]
     double analysis_cb_conductivity = 100.0;   ///< electronic conductivity of a CB agglomerate [S/m]
     int analysis_surface_points = 400;         ///< points per NCM sphere of the surface split; 0 = none

@@ -128,7 +128,9 @@ voxel_size = "0.1 um"            # voxel edge of the pore analysis; 0 = only thi
 profile_dz = "0.5 um"            # slab width of the height profiles
 contact_gap = "0 um"             # coordination: surface gap still counted as a contact (0 = touching)
 pore_top = "half_solid"          # pore statistics below the half-solid height ("highest": below the highest top)
-transport_voxel_sizes = ["0.4 um", "0.2 um"]  # tortuosity / conductivity solves, one voxelization each
+transport_voxel_sizes = []       # tortuosity / conductivity solves, one voxelization each, e.g.
+                                 # ["0.4 um", "0.2 um"]; off by default: minutes even for the quick case
+                                 # with the Jacobi-CG solver (docs/analysis.md)
                                  # (the list shows the voxel-size convergence; the last is reported); [] = none
 ncm_conductivity = 0.01          # electronic conductivity of NCM [S/m] (an input: lithiated NCM622 ~1e-4..1e-1)
 cb_conductivity = 100            # electronic conductivity of a CB agglomerate, carbon + binder + pores [S/m]
