@@ -108,7 +108,7 @@ public:
     [[nodiscard]] Vec3 momentum() const;
     /// Rates that limit the step of what stays explicit (docs/model.md "Stability guard"),
     /// estimated on the laws' own linear operators by power iteration from a random start
-    /// (warm-started from the last estimate's vectors), gaps reduced by the skin:
+    /// (seeded by the step: a resumed run repeats it), gaps reduced by the skin:
     /// damping_rate: λ_max of M⁻¹R (R: the resistance of every dissipative law; explicit
     /// integrator only, 0 otherwise), stable for Δt λ < 2;
     /// stiffness_rate: sqrt(λ_max) of M_eff⁻¹K (K: contact springs, van der Waals, capillary
@@ -163,7 +163,7 @@ private:
     std::vector<SelfBlock> block_;
     std::vector<std::vector<SelfBlock>> thread_block_;
     std::vector<Vec3> accel_, alpha_;
-    mutable std::vector<double> guard_vector_[2]; ///< last estimate's vectors (warm start)
+    mutable std::vector<double> guard_vector_[2]; ///< the estimate's work vectors, reused
     // Per-thread force/torque buffers (thread 0 writes into the store): a fixed reduction order
     // makes results identical run to run for a given thread count.
     std::vector<std::vector<Vec3>> thread_force_, thread_torque_;

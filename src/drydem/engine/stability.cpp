@@ -11,8 +11,8 @@
 //      semi-implicit kick, whose self-blocks D add to the inertia, 0 for the explicit one).
 // Gaps are reduced by the skin: before the next rebuild a gap can close by at most that much.
 // λ_max comes from power iteration on M_eff⁻¹ K (a generalised symmetric problem, so the
-// eigenvalues are real and ≥ 0) from a random start mixed into the last estimate's vector, so
-// one cluster's plateau does not hide a worse one elsewhere.
+// eigenvalues are real and ≥ 0) from a random start, so one cluster's plateau does not hide a
+// worse one elsewhere.
 #include "drydem/engine/simulation.hpp"
 #include <omp.h>
 #include <algorithm>
@@ -161,9 +161,10 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
         std::vector<double> y(6 * n);
         std::mt19937_64 rng(0x5eed ^ std::uint64_t(step_));
         std::uniform_real_distribution<double> u(-1.0, 1.0);
-        const bool warm = x.size() == 6 * n;
+        // A fresh random start (seeded by the step) every call, never the last call's vector: the
+        // estimate must follow from the engine state alone, so that a resumed run is bit-identical.
         x.resize(6 * n);
-        for (double& v : x) v = (warm ? v : 0.0) + 0.3 * u(rng);
+        for (double& v : x) v = u(rng);
         const SelfBlock none{};
         auto block = [&](std::size_t i) -> const SelfBlock& { return semi ? blocks[i] : none; };
         auto mass_norm2 = [&]() {
