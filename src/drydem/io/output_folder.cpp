@@ -58,7 +58,8 @@ void prepare_output_folder(const fs::path& dir, bool overwrite) {
     std::vector<std::string> ours, foreign;
     for (const auto& e : fs::directory_iterator(dir)) {
         const std::string name = e.path().filename().string();
-        if (name == output_lock_name) continue;
+        // The lock, and the console capture a study opens before it starts the run here.
+        if (name == output_lock_name || name == "console.txt") continue;
         (is_run_output(name) ? ours : foreign).push_back(name);
     }
     if (ours.empty() && foreign.empty()) return;
