@@ -14,8 +14,6 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
     : p_(std::move(particles)), box_(box), ff_(std::move(forces)), settings_(settings),
       nl_(settings.skin, settings.threads), liquid_level_(settings.initial_liquid_level) {
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
-    thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
-    thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     allocate_integrator();
     stats_.layer_top = p_.size() ? -INFINITY : 0.0;
     for (std::size_t i = 0; i < p_.size(); ++i) {
@@ -32,8 +30,6 @@ Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSett
       rebuilds_since_sort_(state.rebuilds_since_sort) {
     settings_.dt = state.dt;
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
-    thread_force_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
-    thread_torque_.assign(std::size_t(threads_ - 1), std::vector<Vec3>(p_.size()));
     nl_.restore(std::move(state.neighbors));
     allocate_integrator();
     if (semi_implicit()) {
@@ -47,11 +43,20 @@ Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSett
 }
 
 void Simulation::allocate_integrator() {
-    if (!semi_implicit()) return;
     const std::size_t n = p_.size();
+    const bool semi = semi_implicit();
+    buffer_.assign(std::size_t(threads_), {});
+    if (threads_ > 1)
+        for (ThreadBuffer& b : buffer_) {
+            b.force.assign(n, {});
+            b.torque.assign(n, {});
+            if (semi) b.block.assign(n, {});
+            b.marked.assign(n, 0);
+            b.touched.reserve(n);
+        }
+    if (!semi) return;
     body_resistance_.assign(n, {});
     block_.assign(n, {});
-    thread_block_.assign(std::size_t(threads_ - 1), std::vector<SelfBlock>(n));
     accel_.assign(n, {});
     alpha_.assign(n, {});
 }
@@ -158,22 +163,52 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
     ParticleStore& p = p_;
     const std::size_t species_count = std::size_t(ff_.species_count);
     const PairParams* pair_table = ff_.pair.data();
+    const std::size_t threads = std::size_t(threads_);
 
-    // Pair loop over the half list. Thread 0 accumulates into the store (which holds the particle
-    // forces already), the others into their own buffers, which the reduction adds in a fixed
-    // order and leaves zeroed for the next step. (A variant that evaluated batches of 64 pairs in
-    // one `omp simd` loop was measured 20 % slower: the gathers and masked branches cost more
-    // than the overlapped divisions save.) With SelfBlocks, each pair's dissipative resistance
-    // is also added to both particles' self-blocks (semi-implicit kick).
+    // The rows [lo, hi) of thread t hold an equal share of the list's slots (plus one per row),
+    // not of the particles: pairs are owned by the larger particle and the film is denser at the
+    // bottom, so equal particle counts left one thread waiting for the other at the barrier
+    // (18 % of the time on the peers' bed with two threads).
+    const std::uint32_t slots = n ? nl_.end(n - 1) : 0;
+    auto row_split = [&](std::size_t t, std::size_t parts) -> std::size_t {
+        if (t >= parts) return n;
+        const double target = double(slots + n) * double(t) / double(parts);
+        std::size_t a = 0, b = n; // first row whose cumulative cost reaches the target
+        while (a < b) {
+            const std::size_t m = (a + b) / 2;
+            if (double(nl_.begin(m)) + double(m) < target) a = m + 1;
+            else b = m;
+        }
+        return a;
+    };
+
+    // Pair loop over the half list. Thread t owns the rows [lo, hi) and writes the forces,
+    // torques and self-blocks of its own particles straight into the store (which holds the
+    // particle forces already). A partner j owned by another thread goes to t's buffer and its
+    // index to t's `touched` list; after the loop every thread adds the other threads' buffers
+    // for its own particles, in thread order, so results are identical run to run for a given
+    // thread count. The spatial sort keeps partners near in storage order, so only the rows at
+    // a range's edge write across it: the reduction touches a few percent of the particles, not
+    // all of them (it used to stream three full buffers per extra thread every step). (A variant
+    // that evaluated batches of 64 pairs in one `omp simd` loop was measured 20 % slower: the
+    // gathers and masked branches cost more than the overlapped divisions save.) With
+    // SelfBlocks, each pair's dissipative resistance is also added to both particles'
+    // self-blocks (semi-implicit kick).
 #pragma omp parallel num_threads(threads_) reduction(+ : contacts) reduction(max : max_overlap)
     {
-        const int t = omp_get_thread_num();
-        Vec3* force = t == 0 ? p.force.data() : thread_force_[t - 1].data();
-        Vec3* torque = t == 0 ? p.torque.data() : thread_torque_[t - 1].data();
-        SelfBlock* block = nullptr;
-        if constexpr (SelfBlocks) block = t == 0 ? block_.data() : thread_block_[t - 1].data();
-#pragma omp for schedule(static)
-        for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t t = std::size_t(omp_get_thread_num());
+        const std::size_t lo = row_split(t, threads), hi = row_split(t + 1, threads);
+        ThreadBuffer& own = buffer_[t];
+        Vec3* force = p.force.data();
+        Vec3* torque = p.torque.data();
+        SelfBlock* block = block_.data();
+        auto remote = [&](std::uint32_t j) {
+            if (!own.marked[j]) {
+                own.marked[j] = 1;
+                own.touched.push_back(j); // capacity n reserved: never reallocates
+            }
+        };
+        for (std::size_t i = lo; i < hi; ++i) {
             const Vec3 xi = p.position[i];
             const double ri = p.radius[i];
             const PairParams* row = pair_table + std::size_t(p.species[i]) * species_count;
@@ -205,40 +240,52 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
                     ++contacts;
                     max_overlap = std::max(max_overlap, -g.gap / std::min(ri, rj));
                 }
+                const bool local = j - lo < hi - lo; // j in [lo, hi)
+                if (!local) remote(j);
+                Vec3& fj = local ? force[j] : own.force[j];
+                Vec3& tj = local ? torque[j] : own.torque[j];
                 PairForce f;
                 if constexpr (SelfBlocks) {
                     PairResistance r;
                     f = pair_interaction(g, row[p.species[j]], hist, dt, &r);
                     if (r.normal > 0.0 || r.sliding > 0.0 || r.rolling > 0.0) {
                         add_self_block(di, r, g.n, r.lever_i, 1.0);
-                        add_self_block(block[j], r, g.n, r.lever_j, -1.0);
+                        add_self_block(local ? block[j] : own.block[j], r, g.n, r.lever_j, -1.0);
                     }
                 } else {
                     f = pair_interaction(g, row[p.species[j]], hist, dt);
                 }
                 fi += f.force_i;
                 ti += f.torque_i;
-                force[j] -= f.force_i;
-                torque[j] += f.torque_j;
+                fj -= f.force_i;
+                tj += f.torque_j;
             }
             force[i] += fi;
             torque[i] += ti;
             if constexpr (SelfBlocks) block[i] += di;
         }
-        // Fixed-order reduction of the thread buffers.
-        if (threads_ > 1) {
-#pragma omp for schedule(static)
-            for (std::size_t i = 0; i < n; ++i)
-                for (int k = 0; k < threads_ - 1; ++k) {
-                    p.force[i] += thread_force_[k][i];
-                    p.torque[i] += thread_torque_[k][i];
-                    thread_force_[k][i] = Vec3{};
-                    thread_torque_[k][i] = Vec3{};
+        if (threads > 1) {
+#pragma omp barrier
+            // Fixed-order reduction: every thread adds, for its own particles, what the other
+            // threads wrote across, thread 0 first; it leaves those buffer entries zeroed.
+            for (std::size_t k = 0; k < threads; ++k) {
+                if (k == t) continue;
+                ThreadBuffer& other = buffer_[k];
+                for (const std::uint32_t j : other.touched) {
+                    if (j - lo >= hi - lo) continue;
+                    p.force[j] += other.force[j];
+                    p.torque[j] += other.torque[j];
+                    other.force[j] = Vec3{};
+                    other.torque[j] = Vec3{};
                     if constexpr (SelfBlocks) {
-                        block_[i] += thread_block_[k][i];
-                        thread_block_[k][i] = SelfBlock{};
+                        block_[j] += other.block[j];
+                        other.block[j] = SelfBlock{};
                     }
+                    other.marked[j] = 0;
                 }
+            }
+#pragma omp barrier
+            own.touched.clear();
         }
     }
     contacts_out = contacts;

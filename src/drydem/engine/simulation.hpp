@@ -157,16 +157,22 @@ private:
     PhaseTimes times_;
     std::uint64_t rebuilds_since_sort_ = 0;
     // Semi-implicit integrator: body resistance of each particle (written with the particle
-    // forces, permuted with the particles on a re-sort), pair self-blocks (thread 0; the other
-    // threads in their buffers), and the resulting accelerations.
+    // forces, permuted with the particles on a re-sort), pair self-blocks, and the resulting
+    // accelerations.
     std::vector<BodyResistance> body_resistance_;
     std::vector<SelfBlock> block_;
-    std::vector<std::vector<SelfBlock>> thread_block_;
     std::vector<Vec3> accel_, alpha_;
     mutable std::vector<double> guard_vector_[2]; ///< the estimate's work vectors, reused
-    // Per-thread force/torque buffers (thread 0 writes into the store): a fixed reduction order
-    // makes results identical run to run for a given thread count.
-    std::vector<std::vector<Vec3>> thread_force_, thread_torque_;
+    // What a pair-loop thread writes for partners outside its own rows (see pair_loop): a fixed
+    // reduction order makes results identical run to run for a given thread count. Allocated
+    // only with more than one thread.
+    struct ThreadBuffer {
+        std::vector<Vec3> force, torque;
+        std::vector<SelfBlock> block;        ///< semi-implicit only
+        std::vector<std::uint8_t> marked;    ///< 1 while the particle is in `touched`
+        std::vector<std::uint32_t> touched;  ///< particles written this step (capacity n)
+    };
+    std::vector<ThreadBuffer> buffer_;
 };
 
 /// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below 2.
