@@ -46,9 +46,8 @@ struct Operator {
     }
 };
 
-/// y = A x for the operator A (x, y: 6 values per particle, translation then rotation).
-void apply(const Operator& a, const std::vector<double>& x, std::vector<double>& y) {
-    std::fill(y.begin(), y.end(), 0.0);
+/// y += A x for the operator A (x, y: 6 values per particle, translation then rotation).
+void apply_add(const Operator& a, const std::vector<double>& x, double* y) {
     auto v = [&](std::uint32_t i) { return Vec3{x[6 * i], x[6 * i + 1], x[6 * i + 2]}; };
     auto w = [&](std::uint32_t i) { return Vec3{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]}; };
     auto add = [&](std::uint32_t i, const Vec3& f, const Vec3& t) {
@@ -85,10 +84,23 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
     if (n == 0 || nl_.owners() != n) return out;
     const double skin = nl_.skin();
     const bool semi = semi_implicit();
-    Operator damping, stiffness;
-    std::vector<SelfBlock> blocks(semi ? n : 0); // D_i at the current gaps (semi-implicit)
+    // Thread t collects the entries of the rows [lo_t, hi_t) in its own operators and self-blocks;
+    // every sum below runs over the threads in a fixed order, so the estimate is the same run to
+    // run (and bit for bit the serial one with one thread).
+    const std::size_t threads = std::size_t(threads_);
+    auto lo_of = [&](std::size_t t) { return n * t / threads; };
+    std::vector<Operator> damping(threads), stiffness(threads);
+    // D_i at the current gaps (semi-implicit): thread t's share of every particle's block.
+    std::vector<std::vector<SelfBlock>> share(semi ? threads : 0, std::vector<SelfBlock>(n));
+    std::vector<SelfBlock> blocks(semi ? n : 0);
 
-    for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel num_threads(threads_)
+    {
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    Operator& damping_t = damping[t];
+    Operator& stiffness_t = stiffness[t];
+    std::vector<SelfBlock>* blocks_t = semi ? &share[t] : nullptr;
+    for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) {
         const double r = p.radius[i], z = p.position[i].z;
         const int si = p.species[i];
         // Body laws. Dissipative: drag, substrate lubrication and contact damping.
@@ -112,9 +124,9 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
             }
         }
         if (std::abs(liquid_level_ - z) < r + skin) spring.normal += capillary_stiffness(ff_.capillary);
-        if (!semi) damping.bodies.push_back({std::uint32_t(i), fluid});
-        else add_self_block(blocks[i], fluid_now);
-        if (spring.normal > 0.0) stiffness.bodies.push_back({std::uint32_t(i), spring});
+        if (!semi) damping_t.bodies.push_back({std::uint32_t(i), fluid});
+        else add_self_block((*blocks_t)[i], fluid_now);
+        if (spring.normal > 0.0) stiffness_t.bodies.push_back({std::uint32_t(i), spring});
 
         for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
             const std::uint32_t j = nl_.partner(s);
@@ -140,11 +152,11 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
             if (!semi) {
                 const PairResistance c = dissipative(g);
                 if (c.normal > 0.0 || c.sliding > 0.0)
-                    damping.pairs.push_back({std::uint32_t(i), j, g.n, c});
+                    damping_t.pairs.push_back({std::uint32_t(i), j, g.n, c});
             } else if (now.gap <= 2.0 * now.r_eff || now.gap < 0.0) {
                 const PairResistance c = dissipative(now);
-                add_self_block(blocks[i], c, now.n, c.lever_i, 1.0);
-                add_self_block(blocks[j], c, now.n, c.lever_j, -1.0);
+                add_self_block((*blocks_t)[i], c, now.n, c.lever_i, 1.0);
+                add_self_block((*blocks_t)[j], c, now.n, c.lever_j, -1.0);
             }
             PairResistance k;
             k.lever_i = g.r_i + 0.5 * g.gap;
@@ -163,13 +175,21 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
                 const double h = std::max(now.gap, pp.van_der_waals.min_gap);
                 k.normal += pp.van_der_waals.hamaker * now.r_eff / (3.0 * h * h * h);
             }
-            if (k.normal > 0.0) stiffness.pairs.push_back({std::uint32_t(i), j, g.n, k});
+            if (k.normal > 0.0) stiffness_t.pairs.push_back({std::uint32_t(i), j, g.n, k});
         }
+    }
+    if (semi) {
+#pragma omp barrier
+        for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i)
+            for (std::size_t u = 0; u < threads; ++u) blocks[i] += share[u][i];
+    }
     }
 
     // Power iteration on M_eff⁻¹ A; returns λ_max (Rayleigh quotient in the M_eff norm).
-    auto largest = [&](const Operator& a, double s, std::vector<double>& x) {
-        std::vector<double> y(6 * n);
+    std::vector<double> y(6 * n);
+    std::vector<std::vector<double>> y_share(threads > 1 ? threads : 0, std::vector<double>(6 * n));
+    std::vector<double> partial(threads);
+    auto largest = [&](const std::vector<Operator>& a, double s, std::vector<double>& x) {
         std::mt19937_64 rng(0x5eed ^ std::uint64_t(step_));
         std::uniform_real_distribution<double> u(-1.0, 1.0);
         // A fresh random start (seeded by the step) every call, never the last call's vector: the
@@ -178,28 +198,58 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
         for (double& v : x) v = u(rng);
         const SelfBlock none{};
         auto block = [&](std::size_t i) -> const SelfBlock& { return semi ? blocks[i] : none; };
-        auto mass_norm2 = [&]() {
-            double q = 0.0;
-            for (std::size_t i = 0; i < n; ++i) {
-                const Vec3 v{x[6 * i], x[6 * i + 1], x[6 * i + 2]};
-                const Vec3 w{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]};
-                q += p.mass[i] * norm2(v) + norm2(w) / p.inv_inertia[i] + s * quadratic(block(i), v, w);
+        // Σ_i term(i), each thread over its rows, the threads' sums added in order.
+        auto ordered_sum = [&](auto&& term) {
+#pragma omp parallel num_threads(threads_)
+            {
+                const std::size_t t = std::size_t(omp_get_thread_num());
+                double q = 0.0;
+                for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) q += term(i);
+                partial[t] = q;
             }
+            double q = 0.0;
+            for (double v : partial) q += v;
             return q;
+        };
+        auto mass_norm2 = [&](std::size_t i) {
+            const Vec3 v{x[6 * i], x[6 * i + 1], x[6 * i + 2]};
+            const Vec3 w{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]};
+            return p.mass[i] * norm2(v) + norm2(w) / p.inv_inertia[i] + s * quadratic(block(i), v, w);
         };
         double lambda = 0.0;
         int it = 0;
         for (; it < 60; ++it) {
-            const double q = mass_norm2();
+            const double q = ordered_sum(mass_norm2);
             if (!(q > 0.0)) break;
             const double scale = 1.0 / std::sqrt(q);
-            for (double& v : x) v *= scale;
-            apply(a, x, y);
-            double rayleigh = 0.0;
-            for (std::size_t k = 0; k < 6 * n; ++k) rayleigh += x[k] * y[k];
+#pragma omp parallel num_threads(threads_)
+            {
+                const std::size_t t = std::size_t(omp_get_thread_num());
+                for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) x[k] *= scale;
+#pragma omp barrier
+                // y = A x: each thread applies its rows' entries into its own share of y (all
+                // of y with one thread), then the shares are added in thread order.
+                double* y_t = threads > 1 ? y_share[t].data() : y.data();
+                std::fill(y_t, y_t + 6 * n, 0.0);
+                apply_add(a[t], x, y_t);
+                if (threads > 1) {
+#pragma omp barrier
+                    for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) {
+                        double sum = 0.0;
+                        for (std::size_t v = 0; v < threads; ++v) sum += y_share[v][k];
+                        y[k] = sum;
+                    }
+                }
+            }
+            const double rayleigh = ordered_sum([&](std::size_t i) {
+                double r = 0.0;
+                for (std::size_t k = 6 * i; k < 6 * i + 6; ++k) r += x[k] * y[k];
+                return r;
+            });
             const bool converged = it >= 8 && std::abs(rayleigh - lambda) < 1e-3 * rayleigh;
             lambda = rayleigh;
             if (converged) break;
+#pragma omp parallel for schedule(static) num_threads(threads_)
             for (std::size_t i = 0; i < n; ++i) {
                 Vec3 av, aw;
                 solve_self_block(block(i), s, p.mass[i], 1.0 / p.inv_inertia[i],
