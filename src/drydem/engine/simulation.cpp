@@ -218,12 +218,22 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
             for (std::uint32_t s = nl_.begin(i); s < row_end; ++s) {
                 const std::uint32_t j = nl_.partner(s);
                 // The partners' data lie in L2/L3: ask for the next partner's lines early.
+                if (s + 2 < row_end) {
+                    const std::uint32_t jf = nl_.partner(s + 2);
+                    __builtin_prefetch(&p.position[jf]);
+                    __builtin_prefetch(&p.radius[jf]);
+                    __builtin_prefetch(&p.mass[jf]);
+                }
                 if (s + 1 < row_end) {
                     const std::uint32_t jn = nl_.partner(s + 1);
                     __builtin_prefetch(&p.velocity[jn]);
                     __builtin_prefetch(&p.omega[jn]);
                     __builtin_prefetch(&force[jn], 1);
                     __builtin_prefetch(&torque[jn], 1);
+                    if constexpr (SelfBlocks) { // 120 bytes: two cache lines
+                        __builtin_prefetch(&block[jn], 1);
+                        __builtin_prefetch(reinterpret_cast<const char*>(&block[jn]) + 64, 1);
+                    }
                 }
                 const Vec3 d = box_.minimum_image(xi, p.position[j]);
                 const double dist2 = norm2(d);
