@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/io/checkpoint.hpp"
+#include "drydem/output/checkpoint.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/particle_io.hpp"
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/io/analysis_writer.hpp"
+#include "drydem/output/analysis_writer.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/git_hash.hpp"
 #include <fmt/format.h>
