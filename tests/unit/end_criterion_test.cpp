@@ -15,7 +15,7 @@ TEST(EndCriterion, FollowsThenRelaxesThenEnds) {
     EXPECT_TRUE(std::isinf(end.time_end()));
     // The top follows the level (within the gap): nothing happens.
     EXPECT_EQ(end.update(0.1, 20e-6, 21e-6), Event::none);
-    EXPECT_EQ(end.update(0.2, 18e-6, 20e-6), Event::none); // gap exactly 2 um: not beyond
+    EXPECT_EQ(end.update(0.2, 18e-6, 19.5e-6), Event::none);
     EXPECT_FALSE(end.final_found());
     // The level leaves the top behind: H_final = the top at that step.
     EXPECT_EQ(end.update(0.3, 15e-6, 17.5e-6), Event::final_reached);
