@@ -135,3 +135,25 @@ TEST(Stability, StepFarAboveBoundBlowsUpV14) {
     }
     EXPECT_TRUE(threw || ke_max > 1e3 * ke0) << "ke0 " << ke0 << ", ke_max " << ke_max;
 }
+
+// The van der Waals snap-in enters the stiffness rate at the current gap, not at the skin-reduced
+// one: for two CB spheres 0.35 µm apart (beyond the skin, so no contact can form before the next
+// rebuild) the explicit integrator's ω² is |dF/dh| (1/m_i + 1/m_j) = A R* / (3 h³) · 2/m for any
+// skin (with the skin subtracted, the 0.3 µm skin would put the pair at 0.05 µm: 343× stiffer).
+TEST(Stability, SnapInRateUsesTheCurrentGap) {
+    ForceField ff = all_models();
+    const PairParams cb = ff.pair_params(5, 5);
+    const double gap = 0.35e-6;
+    ASSERT_GT(gap, cb.van_der_waals.min_gap);
+    ASSERT_LT(gap, cb.van_der_waals.cutoff_gap);
+    ParticleStore p;
+    p.add(1, 5, kR, kRhoCb, {20e-6, 20e-6, 20e-6});
+    p.add(2, 5, kR, kRhoCb, {20e-6 + 2 * kR + gap, 20e-6, 20e-6});
+    const double r_eff = 0.5 * kR;
+    const double k = cb.van_der_waals.hamaker * r_eff / (3.0 * gap * gap * gap);
+    const double expected = std::sqrt(k * 2.0 / p.mass[0]);
+    for (double skin : {0.0, 0.1e-6, 0.3e-6}) {
+        const Simulation sim(p, Box{40e-6, 40e-6}, ff, {1e-11, skin, 1});
+        EXPECT_NEAR(sim.stability_estimate().stiffness_rate, expected, 1e-3 * expected) << skin;
+    }
+}

@@ -5,11 +5,17 @@
 //   R: every dissipative law's resistance (lubrication, contact damping, substrate lubrication,
 //      Stokes drag) — limits the explicit integrator, Δt λ_max(M⁻¹R) < 2;
 //   K: the stiffness of the conservative laws — Hertz normal S_n and tangential S_t (with the
-//      contact lever arms), van der Waals dF/dh = A R* / (3 h³) (h ≥ h_min: the snap-in),
-//      the capillary spring 2πσ s_cap of a particle cutting the level — limits every
-//      integrator, Δt ω_max < 2 with ω² = λ_max(M_eff⁻¹K), M_eff = M + s D (s = Δt for the
-//      semi-implicit kick, whose self-blocks D add to the inertia, 0 for the explicit one).
-// Gaps are reduced by the skin: before the next rebuild a gap can close by at most that much.
+//      contact lever arms), the capillary spring 2πσ s_cap of a particle cutting the level —
+//      limits every integrator, Δt ω_max < 2 with ω² = λ_max(M_eff⁻¹K), M_eff = M + s D (s = Δt
+//      for the semi-implicit kick, whose self-blocks D add to the inertia, 0 for the explicit
+//      one). The contact gaps are reduced by the skin: before the next rebuild a gap can close
+//      by at most that much, and the Hertz stiffness grows with the overlap.
+//      Van der Waals adds |dF/dh| = A R* / (3 h³) (h ≥ h_min) at the current gap. Its true
+//      stiffness is negative: linearised, the snap-in grows like exp(ω t) and velocity Verlet
+//      follows it with a growth per step 1 + (ωΔt)²/2 + … ≤ e^{ωΔt}, never unstably, so it is
+//      an accuracy bound on the snap (Δt ω ≤ 1: 2.6 per step for e = 2.7), not a stability
+//      one, and the skin (which would put every pair within 0.3 µm at h_min) does not apply.
+//      Adding |K_vdW| to K keeps the estimate an upper bound of both rates.
 // λ_max comes from power iteration on M_eff⁻¹ K (a generalised symmetric problem, so the
 // eigenvalues are real and ≥ 0) from a random start, so one cluster's plateau does not hide a
 // worse one elsewhere.
@@ -143,14 +149,19 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
             PairResistance k;
             k.lever_i = g.r_i + 0.5 * g.gap;
             k.lever_j = g.r_j + 0.5 * g.gap;
-            if (g.gap < 0.0) {
+            if (g.gap < 0.0) { // a contact, or one the pair can reach before the next rebuild
                 const HertzMindlinCoefficients co =
                     hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, pp.contact);
                 k.normal = co.s_n;
                 k.sliding = co.s_t;
-            } else if (pp.van_der_waals.hamaker != 0.0 && now.gap <= pp.van_der_waals.cutoff_gap) {
-                const double h = std::max(g.gap, pp.van_der_waals.min_gap);
-                k.normal = pp.van_der_waals.hamaker * g.r_eff / (3.0 * h * h * h);
+            }
+            // Van der Waals snap-in at the current gap: its stiffness is negative (the attraction
+            // grows as the gap closes), so it cannot make the kick unstable, only the snap
+            // inaccurate; |dF/dh| bounds the snap's growth rate (see the file header).
+            if (pp.van_der_waals.hamaker != 0.0 && now.gap >= 0.0 &&
+                now.gap <= pp.van_der_waals.cutoff_gap) {
+                const double h = std::max(now.gap, pp.van_der_waals.min_gap);
+                k.normal += pp.van_der_waals.hamaker * now.r_eff / (3.0 * h * h * h);
             }
             if (k.normal > 0.0) stiffness.pairs.push_back({std::uint32_t(i), j, g.n, k});
         }
