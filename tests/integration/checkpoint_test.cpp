@@ -7,7 +7,7 @@
 #include "drydem/drying/liquid_level.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/simulation.hpp"
-#include "drydem/io/checkpoint.hpp"
+#include "drydem/output/checkpoint.hpp"
 #include "drydem/setup/formulation.hpp"
 #include "drydem/setup/insertion.hpp"
 #include <gtest/gtest.h>

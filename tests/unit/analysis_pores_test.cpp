@@ -8,7 +8,7 @@
 #include "drydem/analysis/distance_transform.hpp"
 #include "drydem/analysis/pore_size.hpp"
 #include "drydem/analysis/voxel_grid.hpp"
-#include "drydem/io/voxel_export.hpp"
+#include "drydem/output/voxel_export.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>

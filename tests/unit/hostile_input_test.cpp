@@ -163,7 +163,7 @@ TEST(ParticleGeometry, PossiblePackingsPass) {
     // Touching and slightly overlapping spheres are packings.
     EXPECT_EQ(geometry_error(packing("3,1,3e-6,4740,10e-6,15.5e-6,3e-6")), ""); // 0.5 um into particle 1
     // The peers' settled bed (7,526 spheres, LAMMPS data) passes.
-    const fs::path bed = fs::path(DRYDEM_SOURCE_DIR "/../shared/peers/data/settled_30um.data");
+    const fs::path bed = fs::path(DRYDEM_SOURCE_DIR "/tests/data/peers/settled_30um.data");
     const ParticleFile f = read_particles(bed);
     EXPECT_NO_THROW(check_particle_geometry(f, *f.lx, *f.ly, bed));
 }

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kPeers = fs::path(DRYDEM_SOURCE_DIR "/../shared/peers/data");
+const fs::path kPeers = fs::path(DRYDEM_SOURCE_DIR "/tests/data/peers");
 
 using drydem::testing_support::temp_dir;
 

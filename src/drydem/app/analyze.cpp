@@ -5,9 +5,9 @@
 #include "drydem/app/commands.hpp"
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/core/error.hpp"
-#include "drydem/io/analysis_writer.hpp"
+#include "drydem/output/analysis_writer.hpp"
 #include "drydem/io/particle_io.hpp"
-#include "drydem/io/voxel_export.hpp"
+#include "drydem/output/voxel_export.hpp"
 #include <fmt/format.h>
 #include <omp.h>
 #include <sys/resource.h>

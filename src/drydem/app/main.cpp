@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
 
     std::string config_file, out_dir, particles, resume_dir;
     std::vector<std::string> sets;
-    std::string seed_text, threads_text;
+    std::string seed_text, threads_text, stop_after_text;
     bool overwrite = false;
     bool quiet = false, no_plots = false, couple_dryer = false, table2 = false;
 
@@ -88,6 +88,12 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingDirectory);
     run->add_flag("--quiet", quiet, "only warnings and errors on the console");
     run->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+    // For tests only: a deterministic stand-in for a signal or a kill at a given step.
+    auto* stop_after_opt =
+        run->add_option("--stop-after-steps", stop_after_text,
+                        "for testing: stop after step N as SIGTERM would (checkpoint, results so "
+                        "far, exit 1); also with --resume")
+            ->group("Testing");
     run->add_flag("--couple-dryer", couple_dryer,
                   "iterate dryer model <-> DEM until the final thickness settles (paper Sec. 8; "
                   "each DEM run in DIR/iter_N, summary in DIR/coupling.json)");
@@ -181,6 +187,11 @@ int main(int argc, char** argv) {
             threads = cli_integer("--threads", threads_text, 1024, "an integer 0..1024 (0 = all cores)");
             check_threads("--threads", long(*threads));
         }
+        std::optional<std::int64_t> stop_after;
+        if (stop_after_opt->count() > 0)
+            stop_after = std::int64_t(cli_integer("--stop-after-steps", stop_after_text,
+                                                  std::numeric_limits<std::int64_t>::max(),
+                                                  "a step count 0..9223372036854775807"));
         for (const int n : {study_opt.threads, an.threads, bench_opt.threads}) check_threads("--threads", n);
         if (seed && resume_dir.empty()) sets.push_back(fmt::format("run.seed={}", *seed));
         if (threads && resume_dir.empty()) sets.push_back(fmt::format("run.threads={}", *threads));
@@ -282,6 +293,7 @@ int main(int argc, char** argv) {
         if (!particles.empty()) o.particles_file = particles;
         o.quiet = quiet;
         o.plots = !no_plots;
+        o.stop_after_steps = stop_after;
         if (couple_dryer) return app::run_coupled(c, o);
         // dryer.schedule = "model": the liquid level follows the dryer model's rates (D-6 step 2).
         if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c);

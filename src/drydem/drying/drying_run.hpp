@@ -4,6 +4,7 @@
 // interface.md (summary.json, timeseries.csv, snapshots, final particles, log, plots).
 #pragma once
 #include "drydem/io/config.hpp"
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -18,6 +19,9 @@ struct RunOptions {
     /// Continue the run whose output folder is output_dir from its checkpoint
     /// (output_dir/checkpoint/state.bin); the config must be the checkpoint's (resume_config()).
     bool resume = false;
+    /// For testing: stop after this step (counted from the run's start, also when resumed) as a
+    /// stop request would: checkpoint, results so far, completed = false.
+    std::optional<std::int64_t> stop_after_steps;
 };
 
 /// Outcome of a drying run (also written to summary.json).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/io/analysis_writer.hpp"
+#include "drydem/output/analysis_writer.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/git_hash.hpp"
 #include <fmt/format.h>
@@ -96,10 +96,10 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
             L.cb_z.conducting_fraction > 0 ? L.cb_z.percolating_fraction / L.cb_z.conducting_fraction : 0.0;
         bool converged = true;
         double balance = 0.0;
-        for (const ConductionResult* c : {&L.pore_z, &L.pore_x, &L.pore_y, &L.electronic_z, &L.cb_z}) {
-            if (c->unknowns == 0) continue;
-            converged = converged && c->converged;
-            balance = std::max(balance, c->flux_balance);
+        for (const ConductionResult* cr : {&L.pore_z, &L.pore_x, &L.pore_y, &L.electronic_z, &L.cb_z}) {
+            if (cr->unknowns == 0) continue;
+            converged = converged && cr->converged;
+            balance = std::max(balance, cr->flux_balance);
         }
         if (L.walk.walkers > 0) {
             auto tau = [&](int d) { return L.walk.diffusivity[d] > 0 ? 1.0 / L.walk.diffusivity[d] : 0.0; };
@@ -150,20 +150,20 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
             {"specific_surface_electrolyte_m2_g", r.bulk.mass.ncm > 0 ? a.electrolyte / (r.bulk.mass.ncm * 1e3) : 0.0}};
     }
     if (r.binder) {
-        const BinderProfile& b = *r.binder;
+        const BinderProfile& bp = *r.binder;
         nlohmann::ordered_json rates = nlohmann::ordered_json::array();
-        rates.push_back({{"rate_factor", 1.0}, {"peclet", b.peclet}, {"bottom10", b.bottom10}, {"top10", b.top10}});
+        rates.push_back({{"rate_factor", 1.0}, {"peclet", bp.peclet}, {"bottom10", bp.bottom10}, {"top10", bp.top10}});
         for (const auto& [f, bf] : r.binder_rates)
             rates.push_back({{"rate_factor", f}, {"peclet", bf.peclet}, {"bottom10", bf.bottom10}, {"top10", bf.top10}});
         j["binder_migration"] = {{"model", "paper Eq. 1, 1D convection-diffusion (docs/analysis.md)"},
                                  {"diffusivity_m2_s", o.binder.diffusivity},
-                                 {"evaporation_velocity_um_s", b.evaporation_rate * 1e6},
-                                 {"peclet", b.peclet},
-                                 {"consolidation_time_s", b.consolidation_time},
-                                 {"end_time_s", b.end_time},
-                                 {"bottom10_over_mean", b.bottom10},
-                                 {"top10_over_mean", b.top10},
-                                 {"mass_balance", b.mass_balance},
+                                 {"evaporation_velocity_um_s", bp.evaporation_rate * 1e6},
+                                 {"peclet", bp.peclet},
+                                 {"consolidation_time_s", bp.consolidation_time},
+                                 {"end_time_s", bp.end_time},
+                                 {"bottom10_over_mean", bp.bottom10},
+                                 {"top10_over_mean", bp.top10},
+                                 {"mass_balance", bp.mass_balance},
                                  {"drying_rate_factors", rates}};
     }
     j["version"] = DRYDEM_VERSION;

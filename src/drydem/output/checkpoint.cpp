@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/io/checkpoint.hpp"
+#include "drydem/output/checkpoint.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/particle_io.hpp"
 #include <fmt/format.h>
@@ -10,7 +10,9 @@ namespace drydem {
 namespace {
 
 constexpr char kMagic[8] = {'D', 'R', 'Y', 'D', 'E', 'M', 'C', 'K'};
-constexpr std::uint32_t kFormatVersion = 2;
+// Format 3: the drying run's progress is a versioned list of named fields (drying/run_state.hpp),
+// no longer the raw bytes of a struct.
+constexpr std::uint32_t kFormatVersion = 3;
 
 std::uint64_t fnv1a(const unsigned char* data, std::size_t n) {
     std::uint64_t h = 14695981039346656037ull;

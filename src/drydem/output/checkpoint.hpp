@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Checkpoints (interface.md `checkpoint/`): a versioned little binary format holding the engine's
 // complete state (particles in storage order, neighbor list with contact histories, step, time,
-// liquid level, Δt), the drying run's own progress, the seed and the resolved config. Doubles are
+// liquid level, Δt), the drying run's own progress (a versioned list of named fields,
+// drying/run_state.hpp), the seed and the resolved config. Doubles are
 // stored as their bytes, so a resumed run continues bit for bit. The file ends with its size and
 // an FNV-1a checksum and is written atomically (temporary file + rename): a run killed while
 // writing leaves the previous checkpoint intact, and a damaged file is refused with a clear error.
@@ -22,23 +23,29 @@ public:
     template <class T>
     void pod(const T& v) {
         static_assert(std::is_trivially_copyable_v<T>);
-        const auto* b = reinterpret_cast<const unsigned char*>(&v);
-        bytes_.insert(bytes_.end(), b, b + sizeof(T));
+        append(&v, sizeof(T));
     }
     template <class T>
     void vec(const std::vector<T>& v) {
         static_assert(std::is_trivially_copyable_v<T>);
         pod(std::uint64_t(v.size()));
-        const auto* b = reinterpret_cast<const unsigned char*>(v.data());
-        bytes_.insert(bytes_.end(), b, b + v.size() * sizeof(T));
+        append(v.data(), v.size() * sizeof(T));
     }
     void str(const std::string& s) {
         pod(std::uint64_t(s.size()));
-        bytes_.insert(bytes_.end(), s.begin(), s.end());
+        append(s.data(), s.size());
     }
     [[nodiscard]] const std::vector<unsigned char>& bytes() const { return bytes_; }
 
 private:
+    // resize + memcpy rather than vector::insert of a byte range: GCC 12 warns falsely
+    // (-Wstringop-overflow) on the inlined insert into an empty vector.
+    void append(const void* data, std::size_t n) {
+        if (n == 0) return;
+        const std::size_t at = bytes_.size();
+        bytes_.resize(at + n);
+        std::memcpy(bytes_.data() + at, data, n);
+    }
     std::vector<unsigned char> bytes_;
 };
 

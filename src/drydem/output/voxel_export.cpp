@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/io/voxel_export.hpp"
+#include "drydem/output/voxel_export.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/particle_io.hpp"
 #include <fmt/format.h>

@@ -1,0 +1,345 @@
+// SPDX-License-Identifier: MIT
+// The outputs of a drying run that follow it step by step: diagnostics, time series, frames,
+// LAMMPS dump, checkpoint and progress line. Each owns its trigger and its resume state. The
+// outputs of the end (final particles, analysis, summary, plots) are in run_summary.cpp.
+#include "drydem/core/error.hpp"
+#include "drydem/drying/eta.hpp"
+#include "drydem/drying/film_measures.hpp"
+#include "drydem/drying/run_checkpoint.hpp"
+#include "drydem/drying/run_observer.hpp"
+#include "drydem/drying/run_summary.hpp"
+#include "drydem/io/config.hpp"
+#include "drydem/io/snapshot_writers.hpp"
+#include <fmt/format.h>
+#include <spdlog/logger.h>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <optional>
+
+namespace drydem {
+namespace {
+namespace fs = std::filesystem;
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+/// Overlaps beyond this fraction of the smaller radius are warned about once (model.md C-9).
+constexpr double kOverlapWarning = 0.25;
+/// Density of an uncalendered dry film [kg/m^3], about what the paper's films reach (M-8.3): the
+/// ETA's guess of the final thickness before it is found.
+constexpr double kTypicalCoatingDensity = 2400.0;
+
+/// Cuts a file back to `size` bytes: output written after the checkpoint is replayed.
+void truncate_file(const fs::path& file, std::uint64_t size) {
+    std::error_code ec;
+    if (!fs::exists(file, ec)) {
+        if (size == 0) return;
+        throw InputError(fmt::format("--resume: {} is missing", file.string()));
+    }
+    if (fs::file_size(file) < size)
+        throw InputError(fmt::format("--resume: {} is shorter than at the checkpoint", file.string()));
+    fs::resize_file(file, size, ec);
+    if (ec) throw RunError(fmt::format("cannot truncate {}: {}", file.string(), ec.message()));
+}
+
+/// A trigger every `every` seconds of simulated time; never where `every` is infinite.
+struct Every {
+    double every;
+    double next = 0.0;
+    /// Due at t (the caller then advances it).
+    [[nodiscard]] bool due(double t) const { return t >= next; }
+    void advance() { next += every; }
+};
+
+/// Warnings that are given once per run: overlaps beyond kOverlapWarning (C-9), and a film still
+/// shrinking after the last dryer zone (C-21).
+class Diagnostics final : public RunObserver {
+public:
+    explicit Diagnostics(const RunContext& ctx) : ctx_(ctx) {}
+    const char* name() const override { return "diagnostics"; }
+    void after_step(const StepView& s) override {
+        const ScaledParameters& sc = ctx_.film.scaled;
+        const double t = s.sim.time();
+        if (!overlap_ && s.sim.stats().max_overlap_rel > kOverlapWarning) {
+            overlap_ = true;
+            ctx_.log.warn("overlaps exceed {:.0f} % of the smaller radius at process time {:.3f} s "
+                          "(max {:.3f}): the scaled capillary and van der Waals forces press the "
+                          "particles harder than their contact stiffness resists (model.md C-9)",
+                          kOverlapWarning * 100, sc.process_time(t), s.sim.stats().max_overlap_rel);
+        }
+        if (!last_zone_ && int(t / sc.zone_duration_scaled) >= int(sc.level_speeds_scaled.size())) {
+            last_zone_ = true;
+            ctx_.log.warn("the film is still shrinking after the last dryer zone ({:.4g} s); its "
+                          "rate is kept (model.md C-21)", sc.process_time(t));
+        }
+    }
+    void fields(StateFields& f) override {
+        f("diagnostics.warned_overlap", overlap_);
+        f("diagnostics.warned_last_zone", last_zone_);
+    }
+
+private:
+    const RunContext& ctx_;
+    bool overlap_ = false, last_zone_ = false;
+};
+
+/// timeseries.csv: a row every output.timeseries_every of process time, at t = 0 and at the end.
+class TimeSeries final : public RunObserver {
+public:
+    explicit TimeSeries(const RunContext& ctx)
+        : ctx_(ctx), file_(ctx.options.output_dir / "timeseries.csv"),
+          trigger_{ctx.film.scaled.sim_time(ctx.config.timeseries_every)} {}
+    const char* name() const override { return "time series"; }
+    void open(const StepView& s, bool resumed) override {
+        if (resumed) truncate_file(file_, bytes_);
+        writer_.emplace(file_,
+                        std::vector<std::string>{"process_time_s", "sim_time_s", "step", "liquid_level_um",
+                                                 "film_thickness_um", "film_top_p99_um", "kinetic_energy_J",
+                                                 "contacts", "wall_contacts", "max_overlap_rel",
+                                                 "particles_at_level", "dt_lambda", "time_step_s", "zone"},
+                        resumed);
+        if (resumed) return;
+        row(s);
+        trigger_.next = trigger_.every;
+    }
+    void after_step(const StepView& s) override {
+        if (trigger_.due(s.sim.time()) || s.end.done() || s.timeout) {
+            row(s);
+            trigger_.advance();
+        }
+    }
+    void fields(StateFields& f) override {
+        if (!f.loading()) bytes_ = fs::file_size(file_); // every row is flushed
+        f("series.next", trigger_.next);
+        f("series.bytes", bytes_);
+    }
+
+private:
+    void row(const StepView& s) {
+        const Simulation& sim = s.sim;
+        const auto& st = sim.stats();
+        const double values[] = {ctx_.film.scaled.process_time(sim.time()),
+                                 sim.time(),
+                                 double(sim.step_count()),
+                                 sim.liquid_level() * 1e6,
+                                 st.layer_top * 1e6,
+                                 top_percentile(sim.particles(), 0.99) * 1e6,
+                                 sim.kinetic_energy(),
+                                 double(st.contacts),
+                                 double(st.wall_contacts),
+                                 st.max_overlap_rel,
+                                 double(particles_cutting_level(sim.particles(), sim.liquid_level())),
+                                 s.guard.indicator(),
+                                 sim.settings().dt,
+                                 double(ctx_.film.schedule.zone(sim.time()) + 1)};
+        writer_->row(values);
+    }
+
+    const RunContext& ctx_;
+    fs::path file_;
+    Every trigger_;
+    std::uint64_t bytes_ = 0;
+    std::optional<CsvSeriesWriter> writer_;
+};
+
+/// Snapshot times: every output.snapshot_every of process time (0 = none between the first and
+/// the last frame).
+Every snapshot_trigger(const RunContext& ctx) {
+    const double every = ctx.config.snapshot_every;
+    return {every > 0 ? ctx.film.scaled.sim_time(every) : kNever};
+}
+
+/// snapshots/frame_*.vtp + particles.pvd, and the liquid level as level_*.vtp + liquid_level.pvd.
+class Frames final : public RunObserver {
+public:
+    explicit Frames(const RunContext& ctx)
+        : ctx_(ctx), dir_(ctx.options.output_dir / "snapshots"), trigger_(snapshot_trigger(ctx)),
+          particles_pvd_(dir_ / "particles.pvd"), level_pvd_(dir_ / "liquid_level.pvd") {}
+    const char* name() const override { return "frames"; }
+    void open(const StepView& s, bool resumed) override {
+        if (resumed) {
+            for (PvdWriter* w : {&particles_pvd_, &level_pvd_}) {
+                w->load_existing();
+                w->truncate(std::size_t(count_));
+            }
+            return;
+        }
+        frame(s.sim);
+        trigger_.next = trigger_.every;
+    }
+    void after_step(const StepView& s) override {
+        if (!trigger_.due(s.sim.time())) return;
+        frame(s.sim);
+        trigger_.advance();
+    }
+    void finish(const RunEnd& e) override { frame(e.sim); }
+    void fields(StateFields& f) override {
+        f("frames.next", trigger_.next);
+        f("frames.count", count_);
+    }
+
+private:
+    void frame(const Simulation& sim) {
+        const int k = count_++;
+        const double tp = ctx_.film.scaled.process_time(sim.time());
+        const std::string name = fmt::format("frame_{:05d}.vtp", k);
+        write_vtp(dir_ / name, sim.particles(), sim.time(), tp, sim.coordination());
+        particles_pvd_.add(tp, name);
+        const std::string level_name = fmt::format("level_{:05d}.vtp", k);
+        write_level_vtp(dir_ / level_name, ctx_.film.box, sim.liquid_level(), tp);
+        level_pvd_.add(tp, level_name);
+    }
+
+    const RunContext& ctx_;
+    fs::path dir_;
+    Every trigger_;
+    std::int32_t count_ = 0;
+    PvdWriter particles_pvd_, level_pvd_;
+};
+
+/// snapshots/dump.lammpstrj (OVITO, LAMMPS read_dump): a frame at every snapshot time.
+class Dump final : public RunObserver {
+public:
+    explicit Dump(const RunContext& ctx)
+        : ctx_(ctx), file_(ctx.options.output_dir / "snapshots" / "dump.lammpstrj"),
+          trigger_(snapshot_trigger(ctx)) {}
+    const char* name() const override { return "dump"; }
+    void open(const StepView& s, bool resumed) override {
+        if (resumed) truncate_file(file_, bytes_);
+        os_.open(file_, resumed ? std::ios::app : std::ios::trunc);
+        if (resumed) return;
+        frame(s.sim);
+        trigger_.next = trigger_.every;
+    }
+    void after_step(const StepView& s) override {
+        if (!trigger_.due(s.sim.time())) return;
+        frame(s.sim);
+        trigger_.advance();
+    }
+    void finish(const RunEnd& e) override { frame(e.sim); }
+    void fields(StateFields& f) override {
+        if (!f.loading()) {
+            os_.flush();
+            bytes_ = fs::file_size(file_);
+        }
+        f("dump.next", trigger_.next);
+        f("dump.bytes", bytes_);
+    }
+
+private:
+    void frame(const Simulation& sim) {
+        if (!os_.is_open()) os_.open(file_, std::ios::trunc); // a run that failed before open()
+        append_lammps_dump(os_, sim.particles(), ctx_.film.box, sim.step_count(), sim.stats().layer_top);
+        os_.flush();
+    }
+
+    const RunContext& ctx_;
+    fs::path file_;
+    Every trigger_;
+    std::uint64_t bytes_ = 0;
+    std::ofstream os_;
+};
+
+/// checkpoint/state.bin: at the start, every output.checkpoint_every of wall time, and when the
+/// run is stopped (a stopped run can resume).
+class Checkpointer final : public RunObserver {
+public:
+    Checkpointer(const RunContext& ctx, StateVisitor visit_state)
+        : ctx_(ctx), visit_state_(std::move(visit_state)), last_(RunClock::now()) {}
+    const char* name() const override { return "checkpoint"; }
+    void open(const StepView& s, bool resumed) override {
+        // A first checkpoint at once: a run killed before the first checkpoint_every (10 min by
+        // default) can still be resumed.
+        if (!resumed && ctx_.config.checkpoint_every > 0) write(s.sim);
+    }
+    void after_step(const StepView& s) override {
+        if (s.end.done()) return;
+        if (s.stop) {
+            write(s.sim);
+            return;
+        }
+        if (s.timeout || ctx_.config.checkpoint_every <= 0) return;
+        if (std::chrono::duration<double>(s.now - last_).count() >= ctx_.config.checkpoint_every) {
+            last_ = s.now;
+            write(s.sim);
+        }
+    }
+private:
+    void write(const Simulation& sim) {
+        write_run_checkpoint(ctx_.options.output_dir, to_toml(ctx_.config), visit_state_, sim.state());
+        ctx_.log.debug("checkpoint at step {} (process time {:.4f} s)", sim.step_count(),
+                       ctx_.film.scaled.process_time(sim.time()));
+    }
+
+    const RunContext& ctx_;
+    StateVisitor visit_state_;
+    RunClock::time_point last_;
+};
+
+/// The progress line every output.progress_every of wall time: step, process time, level, top,
+/// contacts, pace and ETA.
+class Progress final : public RunObserver {
+public:
+    explicit Progress(const RunContext& ctx) : ctx_(ctx), last_(RunClock::now()) {}
+    const char* name() const override { return "progress"; }
+    void open(const StepView& s, bool /*resumed*/) override {
+        pace_.add(0.0, s.sim.time());
+        first_step_ = s.sim.step_count();
+    }
+    void after_step(const StepView& s) override {
+        if (!s.continues()) return;
+        if (std::chrono::duration<double>(s.now - last_).count() < ctx_.config.progress_every) return;
+        last_ = s.now;
+        const Simulation& sim = s.sim;
+        const double t = sim.time();
+        const double elapsed = std::chrono::duration<double>(s.now - ctx_.session_start).count();
+        pace_.add(elapsed, t);
+        const double eta = pace_.eta(remaining(s));
+        const std::string line = fmt::format(
+            "step {:>9}  t = {:8.3f} s ({:.4g} us sim)  level {:7.3f} um  top {:7.3f} um  "
+            "contacts {:>7}  {:.3g} particle-steps/s  ETA {:.0f} s",
+            sim.step_count(), ctx_.film.scaled.process_time(t), t * 1e6, sim.liquid_level() * 1e6,
+            sim.stats().layer_top * 1e6, sim.stats().contacts,
+            double(sim.particles().size()) * double(sim.step_count() - first_step_) / elapsed, eta);
+        if (ctx_.status.tty()) {
+            ctx_.log.debug("{}", line); // log.txt only
+            ctx_.status.show(line);
+        } else {
+            ctx_.log.info("{}", line);
+        }
+    }
+    void finish(const RunEnd& /*end*/) override { ctx_.status.clear(); }
+
+private:
+    /// Simulated time still to run: until the level is final_gap below the expected final top (the
+    /// current top, or at most the thickness of an uncalendered film of kTypicalCoatingDensity,
+    /// M-8.3), plus the relaxation window.
+    [[nodiscard]] double remaining(const StepView& s) const {
+        const double t = s.sim.time(), top = s.sim.stats().layer_top;
+        if (s.end.final_found()) return s.end.time_end() - t;
+        const double expected_top = std::min(top, std::max(ctx_.film.areal_mass / kTypicalCoatingDensity, 0.5 * top));
+        const double level_end = std::max(0.0, expected_top - s.end.final_gap());
+        return std::max(0.0, ctx_.film.schedule.time_at_level(level_end) - t) + s.end.relaxation();
+    }
+
+    const RunContext& ctx_;
+    RunClock::time_point last_;
+    RecentPace pace_;
+    std::int64_t first_step_ = 0;
+};
+
+} // namespace
+
+std::vector<std::unique_ptr<RunObserver>> make_run_outputs(const RunContext& ctx, StateVisitor visit_state) {
+    std::vector<std::unique_ptr<RunObserver>> list;
+    list.push_back(std::make_unique<Diagnostics>(ctx));
+    list.push_back(std::make_unique<TimeSeries>(ctx));
+    list.push_back(std::make_unique<Frames>(ctx));
+    list.push_back(std::make_unique<Dump>(ctx));
+    list.push_back(std::make_unique<Checkpointer>(ctx, std::move(visit_state)));
+    list.push_back(std::make_unique<Progress>(ctx));
+    append_end_outputs(ctx, list);
+    return list;
+}
+
+} // namespace drydem

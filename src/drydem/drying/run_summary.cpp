@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/drying/run_summary.hpp"
+#include "drydem/analysis/analyze.hpp"
+#include "drydem/drying/film_measures.hpp"
+#include "drydem/git_hash.hpp"
+#include "drydem/output/analysis_writer.hpp"
+#include "drydem/io/particle_io.hpp"
+#include <fmt/format.h>
+#include <spdlog/logger.h>
+#include <algorithm>
+#include <cstdlib>
+
+namespace drydem {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+/// final.csv: the particles where the run ended.
+class FinalParticles final : public RunObserver {
+public:
+    explicit FinalParticles(const RunContext& ctx) : ctx_(ctx) {}
+    const char* name() const override { return "final particles"; }
+    void finish(const RunEnd& e) override {
+        write_particles_csv(ctx_.options.output_dir / "final.csv", e.sim.particles());
+    }
+
+private:
+    const RunContext& ctx_;
+};
+
+/// analysis/: the structure analysis of final.csv (docs/analysis.md) for a completed run with
+/// analysis.at_end; its headline numbers go into the summary.
+class StructureAnalysis final : public RunObserver {
+public:
+    explicit StructureAnalysis(const RunContext& ctx) : ctx_(ctx) {}
+    const char* name() const override { return "structure analysis"; }
+    void finish(const RunEnd& e) override {
+        if (!e.result.completed || !ctx_.config.analysis_at_end) return;
+        try {
+            analyse(e.summary);
+        } catch (const std::exception& ex) {
+            ctx_.log.warn("structure analysis failed: {}", ex.what());
+        }
+    }
+
+private:
+    void analyse(json& summary) const {
+        const Config& c = ctx_.config;
+        const fs::path dir = ctx_.options.output_dir;
+        analysis::AnalysisOptions ao;
+        ao.voxel = c.analysis_voxel_size;
+        ao.profile_dz = c.analysis_profile_dz;
+        ao.contact_gap = c.analysis_contact_gap;
+        ao.pore_top = c.analysis_pore_top;
+        analysis::set_transport_options(ao, c);
+        ao.timeseries = (dir / "timeseries.csv").string();
+        ao.log = [this](const std::string& m) { ctx_.log.info("analysis: {}", m); };
+        const analysis::Structure st = analysis::structure_from_file(read_particles(dir / "final.csv"), c);
+        const analysis::AnalysisResult ar = analysis::analyze_structure(st, ao);
+        write_analysis(dir / "analysis", ar, ao, "final.csv");
+        json add;
+        add["analysis"] = "analysis/analysis.json";
+        add["thickness_half_solid_um"] = ar.bulk.thickness_half_solid * 1e6;
+        add["cb_binder_porosity_eq2"] = ar.bulk.cb_binder_porosity;
+        add["coordination_mean"] = ar.coordination.mean();
+        if (ar.voxelized) {
+            add["psd_peak_um"] = ar.psd.peak * 1e6;
+            add["pore_chord_mean_um"] = {{"x", ar.chords[0].mean_voxels() * ar.voxel * 1e6},
+                                         {"y", ar.chords[1].mean_voxels() * ar.voxel * 1e6},
+                                         {"z", ar.chords[2].mean_voxels() * ar.voxel * 1e6}};
+        }
+        summary.update(add); // all or nothing: a failed analysis leaves no partial keys
+    }
+
+    const RunContext& ctx_;
+};
+
+/// A value known only once the final thickness is found (null before).
+json if_found(bool found, double value) { return found ? json(value) : json(nullptr); }
+
+/// The summary's results: thickness, density, porosity, times.
+void add_results(const RunContext& ctx, const RunEnd& e, json& s) {
+    const DryingResult& r = e.result;
+    const Film& film = ctx.film;
+    const bool found = e.end.final_found();
+    s["status"] = r.completed ? "completed" : "failed";
+    if (!r.completed) s["error"] = r.error;
+    s["name"] = ctx.config.name;
+    s["final_thickness_um"] = if_found(found, r.final_thickness * 1e6);
+    s["final_thickness_relaxed_um"] = if_found(r.completed, r.relaxed_thickness * 1e6);
+    s["film_top_p99_um"] = top_percentile(e.sim.particles(), 0.99) * 1e6;
+    s["density_g_cm3"] = if_found(found, r.density * 1e-3);
+    s["porosity"] = if_found(found, r.porosity);
+    s["areal_loading_mg_cm2"] = film.areal_mass * 100.0;
+    s["areal_loading_nominal_mg_cm2"] = ctx.config.areal_loading * 100.0;
+    s["wet_film_height_um"] = film.recipe.wet_film_height * 1e6;
+    s["solids_density_g_cm3"] = film.recipe.solids_density * 1e-3;
+    s["process_time_final_s"] = if_found(found, r.process_time_final);
+    s["process_time_end_s"] = film.scaled.process_time(e.sim.time());
+    s["final_gap_um"] = e.end.final_gap() * 1e6;
+    s["particles"] = {{"ncm", film.n_ncm}, {"cb", film.n_cb}};
+    s["box_um"] = {ctx.config.box_x * 1e6, ctx.config.box_y * 1e6};
+}
+
+/// The summary's record of how the run was made: scaling, level, integration, cost, build.
+void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
+    const Config& c = ctx.config;
+    const Simulation& sim = e.sim;
+    s["scaling"] = to_json(ctx.film.scaled);
+    // Which shrinkage rates drove the liquid level: the config's, or the dryer model's (docs/dryer.md).
+    std::vector<double> um;
+    for (double r : c.shrinkage_rates) um.push_back(r * 1e6);
+    s["shrinkage_rates_um_s"] = um;
+    s["shrinkage_rates_source"] =
+        c.dryer_schedule == "model"
+            ? fmt::format("dryer model (preset {}, final porosity {:.4g})", c.dryer_preset, c.dryer_final_porosity)
+            : std::string("dryer.shrinkage_rates");
+    s["integrator"] = c.integrator;
+    s["time_step_s"] = c.time_step_cap();
+    s["time_step_min_s"] = e.guard.min_time_step();
+    const std::int64_t steps = e.result.steps;
+    s["time_step_mean_s"] = steps > 0 ? sim.time() / double(steps) : 0.0;
+    const PhaseTimes& pt = sim.phase_times();
+    s["wall_time_phases_s"] = {{"pair", pt.pair}, {"neighbor", pt.neighbor},
+                               {"integrate", pt.integrate}, {"guard", e.guard.wall_time()}};
+    s["neighbor_builds"] = sim.neighbors().builds();
+    s["steps"] = steps;
+    s["seed"] = c.seed;
+    s["resumed"] = ctx.options.resume;
+    s["threads"] = sim.threads();
+    s["version"] = fmt::format("{} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH);
+    s["wall_time_s"] = e.result.wall_time;
+    s["particle_steps_per_s"] = double(sim.particles().size()) * double(steps) / std::max(e.result.wall_time, 1e-9);
+    s["config"] = "config.toml";
+}
+
+/// summary.json (atomically), and the closing log line of a completed run.
+class Summary final : public RunObserver {
+public:
+    explicit Summary(const RunContext& ctx) : ctx_(ctx) {}
+    const char* name() const override { return "summary"; }
+    bool required() const override { return true; }
+    void finish(const RunEnd& e) override {
+        add_results(ctx_, e, e.summary);
+        add_method(ctx_, e, e.summary);
+        const fs::path dir = ctx_.options.output_dir;
+        write_file_atomically(dir / "summary.json", [&](std::ostream& o) { o << e.summary.dump(2) << "\n"; });
+        const DryingResult& r = e.result;
+        if (r.completed)
+            ctx_.log.info("done: final thickness {:.3f} um, density {:.4f} g/cm3, porosity {:.4f}; {} "
+                          "steps in {:.1f} s ({:.3g} particle-steps/s); results in {}",
+                          r.final_thickness * 1e6, r.density * 1e-3, r.porosity, r.steps, r.wall_time,
+                          e.summary["particle_steps_per_s"].get<double>(), dir.string());
+    }
+
+private:
+    const RunContext& ctx_;
+};
+
+/// plots/ by scripts/plot_run.py (and plot_analysis.py after an analysis) with Debian's python3;
+/// their output goes to log.txt.
+class Plots final : public RunObserver {
+public:
+    explicit Plots(const RunContext& ctx) : ctx_(ctx) {}
+    const char* name() const override { return "plots"; }
+    void finish(const RunEnd& e) override {
+        if (!ctx_.options.plots) return;
+        const fs::path dir = ctx_.options.output_dir;
+        const std::string log = (dir / "log.txt").string();
+        if (!plot("plot_run.py", fmt::format("'{}'", dir.string()), log))
+            ctx_.log.warn("plotting failed (see log.txt)");
+        if (e.summary.contains("analysis") &&
+            !plot("plot_analysis.py", fmt::format("'{}' '{}'", (dir / "analysis").string(), (dir / "plots").string()), log))
+            ctx_.log.warn("plotting the analysis failed (see log.txt)");
+    }
+
+private:
+    /// Runs scripts/`script` with `args`; false if it failed (true where python3 or the script
+    /// is missing: plots are optional).
+    static bool plot(const std::string& script, const std::string& args, const std::string& log) {
+        const fs::path file = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / script;
+        if (!fs::exists("/usr/bin/python3") || !fs::exists(file)) return true;
+        const std::string cmd = fmt::format("/usr/bin/python3 '{}' {} >> '{}' 2>&1", file.string(), args, log);
+        return std::system(cmd.c_str()) == 0;
+    }
+
+    const RunContext& ctx_;
+};
+
+} // namespace
+
+void append_end_outputs(const RunContext& ctx, std::vector<std::unique_ptr<RunObserver>>& list) {
+    list.push_back(std::make_unique<FinalParticles>(ctx));
+    list.push_back(std::make_unique<StructureAnalysis>(ctx));
+    list.push_back(std::make_unique<Summary>(ctx));
+    list.push_back(std::make_unique<Plots>(ctx));
+}
+
+} // namespace drydem

@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: MIT
+// The outputs of a drying run's end: final particles (final.csv), the structure analysis of the
+// dried film (analysis/), summary.json and the plots.
+#pragma once
+#include "drydem/drying/run_observer.hpp"
+#include <memory>
+#include <vector>
+
+namespace drydem {
+
+/// Appends, in this order: final particles, structure analysis, summary, plots.
+void append_end_outputs(const RunContext& ctx, std::vector<std::unique_ptr<RunObserver>>& list);
+
+} // namespace drydem

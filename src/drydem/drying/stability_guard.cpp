@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/drying/stability_guard.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <spdlog/logger.h>
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+namespace drydem {
+
+GuardPolicy guard_policy_of(const std::string& name) {
+    if (name == "adapt") return GuardPolicy::adapt;
+    if (name == "refuse") return GuardPolicy::refuse;
+    if (name == "warn") return GuardPolicy::warn;
+    throw InputError(fmt::format("numerics.stability_guard = \"{}\": allowed \"adapt\", \"refuse\", \"warn\"", name));
+}
+
+GuardDecision guard_decision(GuardPolicy policy, double dt, double cap,
+                             const Simulation::StabilityEstimate& e, double warned_indicator) {
+    if (policy == GuardPolicy::adapt) {
+        const double target = guarded_time_step(cap, e);
+        return {target, stability_indicator(target, e)};
+    }
+    const double indicator = stability_indicator(dt, e);
+    if (indicator >= 2.0) return {dt, indicator, GuardDecision::Action::beyond_bound};
+    if (indicator > kGuardWarnIndicator && indicator > warned_indicator + kGuardWarnRise)
+        return {dt, indicator, GuardDecision::Action::warn_close};
+    return {dt, indicator};
+}
+
+void StabilityGuard::start(Simulation& sim) {
+    dt_min_ = sim.settings().dt;
+    const std::string refused = check(sim);
+    builds_seen_ = sim.neighbors().builds();
+    if (!refused.empty()) throw RunError(refused);
+}
+
+void StabilityGuard::after_step(Simulation& sim) {
+    if (sim.neighbors().builds() == builds_seen_) return;
+    builds_seen_ = sim.neighbors().builds();
+    const std::string refused = check(sim);
+    if (!refused.empty()) throw RunError(refused);
+}
+
+std::string StabilityGuard::check(Simulation& sim) {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    const Simulation::StabilityEstimate e = sim.stability_estimate();
+    wall_ += std::chrono::duration<double>(Clock::now() - t0).count();
+    const double dt = sim.settings().dt;
+    const GuardDecision d = guard_decision(policy_, dt, cap_, e, warned_);
+    indicator_ = d.indicator;
+    if (policy_ == GuardPolicy::adapt) {
+        if (d.time_step != dt)
+            log_.debug("step {}: dt {:.3g} -> {:.3g} s (damping {:.3g} /s, stiffness {:.3g} rad/s, at "
+                       "particle {}; {} power iterations)",
+                       sim.step_count(), dt, d.time_step, e.damping_rate, e.stiffness_rate,
+                       e.particle_id, e.iterations);
+        sim.set_time_step(d.time_step);
+        dt_min_ = std::min(dt_min_, d.time_step);
+        return {};
+    }
+    if (d.action == GuardDecision::Action::beyond_bound) {
+        const std::string msg = fmt::format(
+            "time step {:.3g} s is beyond the explicit stability bound: dt*lambda = {:.3g} >= 2 at "
+            "particle {} (damping rate {:.3g} /s, stiffness rate {:.3g} rad/s; docs/model.md "
+            "\"Stability guard\"); lower run.time_step or use numerics.stability_guard = \"adapt\"",
+            dt, d.indicator, e.particle_id, e.damping_rate, e.stiffness_rate);
+        if (policy_ == GuardPolicy::refuse) return msg;
+        log_.warn("{}", msg);
+    } else if (d.action == GuardDecision::Action::warn_close) {
+        warned_ = d.indicator; // warn again only when it keeps rising
+        log_.warn("time step {:.3g} s is close to the stability bound: dt*lambda = {:.3g} at particle {}",
+                  dt, d.indicator, e.particle_id);
+    }
+    return {};
+}
+
+} // namespace drydem
