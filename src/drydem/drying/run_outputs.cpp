@@ -149,11 +149,32 @@ Every snapshot_trigger(const RunContext& ctx) {
     return {every > 0 ? ctx.film.scaled.sim_time(every) : kNever};
 }
 
+/// An output written at every snapshot time and at the end: `frame` writes one.
+class SnapshotObserver : public RunObserver {
+public:
+    explicit SnapshotObserver(const RunContext& ctx) : trigger_(snapshot_trigger(ctx)) {}
+    void after_step(const StepView& s) override {
+        if (!trigger_.due(s.sim.time())) return;
+        frame(s.sim);
+        trigger_.advance();
+    }
+    void finish(const RunEnd& e) override { frame(e.sim); }
+
+protected:
+    virtual void frame(const Simulation& sim) = 0;
+    /// The first frame of a fresh run, at t = 0.
+    void first_frame(const Simulation& sim) {
+        frame(sim);
+        trigger_.next = trigger_.every;
+    }
+    Every trigger_;
+};
+
 /// snapshots/frame_*.vtp + particles.pvd, and the liquid level as level_*.vtp + liquid_level.pvd.
-class Frames final : public RunObserver {
+class Frames final : public SnapshotObserver {
 public:
     explicit Frames(const RunContext& ctx)
-        : ctx_(ctx), dir_(ctx.options.output_dir / "snapshots"), trigger_(snapshot_trigger(ctx)),
+        : SnapshotObserver(ctx), ctx_(ctx), dir_(ctx.options.output_dir / "snapshots"),
           particles_pvd_(dir_ / "particles.pvd"), level_pvd_(dir_ / "liquid_level.pvd") {}
     const char* name() const override { return "frames"; }
     void open(const StepView& s, bool resumed) override {
@@ -164,22 +185,15 @@ public:
             }
             return;
         }
-        frame(s.sim);
-        trigger_.next = trigger_.every;
+        first_frame(s.sim);
     }
-    void after_step(const StepView& s) override {
-        if (!trigger_.due(s.sim.time())) return;
-        frame(s.sim);
-        trigger_.advance();
-    }
-    void finish(const RunEnd& e) override { frame(e.sim); }
     void fields(StateFields& f) override {
         f("frames.next", trigger_.next);
         f("frames.count", count_);
     }
 
 private:
-    void frame(const Simulation& sim) {
+    void frame(const Simulation& sim) override {
         const int k = count_++;
         const double tp = ctx_.film.scaled.process_time(sim.time());
         const std::string name = fmt::format("frame_{:05d}.vtp", k);
@@ -192,31 +206,23 @@ private:
 
     const RunContext& ctx_;
     fs::path dir_;
-    Every trigger_;
     std::int32_t count_ = 0;
     PvdWriter particles_pvd_, level_pvd_;
 };
 
 /// snapshots/dump.lammpstrj (OVITO, LAMMPS read_dump): a frame at every snapshot time.
-class Dump final : public RunObserver {
+class Dump final : public SnapshotObserver {
 public:
     explicit Dump(const RunContext& ctx)
-        : ctx_(ctx), file_(ctx.options.output_dir / "snapshots" / "dump.lammpstrj"),
-          trigger_(snapshot_trigger(ctx)) {}
+        : SnapshotObserver(ctx), ctx_(ctx),
+          file_(ctx.options.output_dir / "snapshots" / "dump.lammpstrj") {}
     const char* name() const override { return "dump"; }
     void open(const StepView& s, bool resumed) override {
         if (resumed) truncate_file(file_, bytes_);
         os_.open(file_, resumed ? std::ios::app : std::ios::trunc);
         if (resumed) return;
-        frame(s.sim);
-        trigger_.next = trigger_.every;
+        first_frame(s.sim);
     }
-    void after_step(const StepView& s) override {
-        if (!trigger_.due(s.sim.time())) return;
-        frame(s.sim);
-        trigger_.advance();
-    }
-    void finish(const RunEnd& e) override { frame(e.sim); }
     void fields(StateFields& f) override {
         if (!f.loading()) {
             os_.flush();
@@ -227,7 +233,7 @@ public:
     }
 
 private:
-    void frame(const Simulation& sim) {
+    void frame(const Simulation& sim) override {
         if (!os_.is_open()) os_.open(file_, std::ios::trunc); // a run that failed before open()
         append_lammps_dump(os_, sim.particles(), ctx_.film.box, sim.step_count(), sim.stats().layer_top);
         os_.flush();
@@ -235,7 +241,6 @@ private:
 
     const RunContext& ctx_;
     fs::path file_;
-    Every trigger_;
     std::uint64_t bytes_ = 0;
     std::ofstream os_;
 };
