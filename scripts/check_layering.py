@@ -18,7 +18,8 @@ from pathlib import Path
 LAYERS = [
     ["core"],                          # vectors, box, particle store, errors: no physics
     ["io"],                            # config (units, schema, defaults), particle files, output folder
-    ["setup", "dryer"],                # formulation -> recipe and particles; the dryer model
+    ["setup"],                         # formulation -> recipe and particles; Eq. 4 (setup/solids)
+    ["dryer"],                         # the dryer model (uses Eq. 4 from setup/solids)
     ["forces", "neighbor", "integrate"],  # pair and body laws; neighbour list; step bounds
     ["engine"],                        # the simulation: pair loop, integration, stability estimate
     ["analysis"],                      # structure analysis of a particle set

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/analysis/structure.hpp"
+#include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
 #include <fmt/format.h>
 #include <cmath>
@@ -7,9 +8,8 @@
 namespace drydem::analysis {
 
 double Formulation::solids_density() const {
-    // Eq. 4: density of the dry solids from the mass fractions.
-    return 1.0 / (ncm_mass_fraction / ncm_density + pvdf_mass_fraction / pvdf_density +
-                  cb_mass_fraction / cb_density);
+    return drydem::solids_density(ncm_mass_fraction, ncm_density, pvdf_mass_fraction, pvdf_density,
+                                  cb_mass_fraction, cb_density);
 }
 
 void Structure::add(const Vec3& x, double r, Phase ph, double rho) {

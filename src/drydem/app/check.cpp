@@ -96,19 +96,10 @@ void print_check(const Config& c) {
     print_guard_clusters(c, r);
     fmt::print("\n");
 
-    // Cost estimate (M-8.3): level travel to an uncalendered density of about 2.4 g/cm3.
-    const double gap = c.final_gap > 0 ? c.final_gap : r.largest_diameter();
-    const double h_final = c.areal_loading / 2400.0;
-    const double travel = std::max(0.0, r.wet_film_height - h_final + gap);
-    double t_sim = 0, left = travel;
-    for (std::size_t z = 0; z < s.level_speeds_scaled.size() && left > 0; ++z) {
-        const bool last = z + 1 == s.level_speeds_scaled.size();
-        const double dz = last ? left : std::min(left, s.level_speeds_scaled[z] * s.zone_duration_scaled);
-        t_sim += dz / s.level_speeds_scaled[z];
-        left -= dz;
-    }
-    t_sim += s.sim_time(c.relaxation);
-    const double steps = t_sim / c.time_step_cap();
+    // Cost estimate (M-8.3), from the derived-quantity checks' own estimate.
+    const DerivedQuantities d = derived_quantities(c);
+    const double h_final = d.final_thickness, travel = d.level_travel, t_sim = d.sim_time;
+    const double steps = d.steps;
     fmt::print("\nCost estimate (M-8.3)\n");
     fmt::print("  final thickness (~2.4 g/cm3) {:.4g} um, level travel {:.4g} um\n", h_final * 1e6, travel * 1e6);
     fmt::print("  simulated time            {:.3g} s ({:.3g} s process, incl. {:g} s relaxation)\n",

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/dryer/film_dryer.hpp"
+#include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
 #include <fmt/format.h>
 #include <algorithm>
@@ -27,7 +28,7 @@ FilmDryerParams film_dryer_preset(std::string_view name) {
 
 FilmGeometry film_geometry(const FilmDryerParams& p) {
     FilmGeometry g{};
-    g.solids_density = 1.0 / (p.w_ncm / p.rho_ncm + p.w_pvdf / p.rho_pvdf + p.w_cb / p.rho_cb); // Eq. 4
+    g.solids_density = solids_density(p.w_ncm, p.rho_ncm, p.w_pvdf, p.rho_pvdf, p.w_cb, p.rho_cb);
     g.solids_height = p.areal_loading / g.solids_density;
     g.initial_liquid = p.areal_loading * (1.0 - p.solids_mass_fraction) / p.solids_mass_fraction; // D-2.1
     const double rho_l0 = p.liquid_density_temperature ? liquid_density(p.initial_temperature) : p.liquid_density;

@@ -2,6 +2,7 @@
 // The outputs of a drying run that follow it step by step: diagnostics, time series, frames,
 // LAMMPS dump, checkpoint and progress line. Each owns its trigger and its resume state. The
 // outputs of the end (final particles, analysis, summary, plots) are in run_summary.cpp.
+#include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/drying/eta.hpp"
 #include "drydem/drying/film_measures.hpp"
@@ -25,9 +26,6 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 /// Overlaps beyond this fraction of the smaller radius are warned about once (model.md C-9).
 constexpr double kOverlapWarning = 0.25;
-/// Density of an uncalendered dry film [kg/m^3], about what the paper's films reach (M-8.3): the
-/// ETA's guess of the final thickness before it is found.
-constexpr double kTypicalCoatingDensity = 2400.0;
 
 /// Cuts a file back to `size` bytes: output written after the checkpoint is replayed.
 void truncate_file(const fs::path& file, std::uint64_t size) {
@@ -317,12 +315,12 @@ public:
 
 private:
     /// Simulated time still to run: until the level is final_gap below the expected final top (the
-    /// current top, or at most the thickness of an uncalendered film of kTypicalCoatingDensity,
+    /// current top, or at most the thickness of an uncalendered film of uncalendered_density,
     /// M-8.3), plus the relaxation window.
     [[nodiscard]] double remaining(const StepView& s) const {
         const double t = s.sim.time(), top = s.sim.stats().layer_top;
         if (s.end.final_found()) return s.end.time_end() - t;
-        const double expected_top = std::min(top, std::max(ctx_.film.areal_mass / kTypicalCoatingDensity, 0.5 * top));
+        const double expected_top = std::min(top, std::max(ctx_.film.areal_mass / uncalendered_density, 0.5 * top));
         const double level_end = std::max(0.0, expected_top - s.end.final_gap());
         return std::max(0.0, ctx_.film.schedule.time_at_level(level_end) - t) + s.end.relaxation();
     }

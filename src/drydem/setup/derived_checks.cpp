@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/setup/derived_checks.hpp"
+#include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -49,19 +50,24 @@ std::string bare_length_hints(const Config& c, const std::vector<std::string_vie
     throw InputError(fmt::format("{} (set by {}){}", what, keys, bare_length_hints(c, causes, bare_lengths)));
 }
 
-/// Simulated time until the level is a largest diameter above the film of an uncalendered
-/// ~2.4 g/cm3 coating, plus the relaxation window (the cost estimate of `drydem check`, M-8.3).
-double estimated_sim_time(const Config& c, const FilmRecipe& r, const ScaledParameters& s) {
+/// The level's travel until it is a largest diameter above the film of an uncalendered coating
+/// (setup/solids.hpp), and the simulated time of that travel plus the relaxation window (the cost
+/// estimate of `drydem check`, M-8.3).
+struct TravelEstimate {
+    double final_thickness, travel, sim_time;
+};
+TravelEstimate estimated_travel(const Config& c, const FilmRecipe& r, const ScaledParameters& s) {
     const double gap = c.final_gap > 0 ? c.final_gap : r.largest_diameter();
-    const double h_final = c.areal_loading / 2400.0;
-    double left = std::max(0.0, r.wet_film_height - h_final + gap), t = 0.0;
+    const double h_final = c.areal_loading / uncalendered_density;
+    const double travel = std::max(0.0, r.wet_film_height - h_final + gap);
+    double left = travel, t = 0.0;
     for (std::size_t z = 0; z < s.level_speeds_scaled.size() && left > 0; ++z) {
         const bool last = z + 1 == s.level_speeds_scaled.size();
         const double dz = last ? left : std::min(left, s.level_speeds_scaled[z] * s.zone_duration_scaled);
         t += dz / s.level_speeds_scaled[z];
         left -= dz;
     }
-    return t + s.sim_time(c.relaxation);
+    return {h_final, travel, t + s.sim_time(c.relaxation)};
 }
 
 } // namespace
@@ -73,7 +79,10 @@ DerivedQuantities derived_quantities(const Config& c) {
     for (const SizeClass& sc : r.species) d.particles += sc.count_exact;
     d.wet_film_height = r.wet_film_height;
     d.solids_density = r.solids_density;
-    d.sim_time = estimated_sim_time(c, r, s);
+    const TravelEstimate e = estimated_travel(c, r, s);
+    d.final_thickness = e.final_thickness;
+    d.level_travel = e.travel;
+    d.sim_time = e.sim_time;
     d.steps = d.sim_time / c.time_step_cap();
     d.memory_bytes = d.particles * bytes_per_particle + 5e6;
     for (double len : c.dryer_zone_lengths) d.dryer_steps += std::ceil(len / c.line_speed / c.dryer_time_step);
@@ -143,7 +152,7 @@ void check_derived_quantities(const Config& c, const std::vector<std::string>& b
         refuse(c, fmt::format("drying.relaxation = {:g} s is not shorter than run.max_process_time = {:g} s: the run "
                               "would stop before its relaxation window ends", c.relaxation, c.max_process_time),
                {"drying.relaxation", "run.max_process_time"}, bare);
-    const double steps = estimated_sim_time(c, r, s) / c.time_step_cap();
+    const double steps = estimated_travel(c, r, s).sim_time / c.time_step_cap();
     if (!positive_finite(steps) || steps > max_steps)
         refuse(c, fmt::format("the run would take about {:.3g} steps of {:g} s; allowed at most {:g}",
                               steps, c.time_step_cap(), max_steps),

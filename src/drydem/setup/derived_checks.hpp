@@ -26,6 +26,8 @@ struct DerivedQuantities {
     double particles = 0.0;        ///< unrounded total count
     double wet_film_height = 0.0;  ///< [m]
     double solids_density = 0.0;   ///< [kg/m^3]
+    double final_thickness = 0.0;  ///< at an uncalendered density (setup/solids.hpp) [m] (M-8.3)
+    double level_travel = 0.0;     ///< of the liquid level until the end criterion [m] (M-8.3)
     double sim_time = 0.0;         ///< estimated simulated time of the run [s] (M-8.3)
     double steps = 0.0;            ///< sim_time / run.time_step
     double memory_bytes = 0.0;     ///< particles x bytes_per_particle + 5 MB

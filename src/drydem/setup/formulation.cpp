@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/setup/formulation.hpp"
+#include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
 #include <fmt/format.h>
 #include <algorithm>
@@ -22,9 +23,8 @@ FilmRecipe make_recipe(const Config& c) {
     FilmRecipe r;
     r.base_area = c.box_x * c.box_y;
     // Eq. 4: density of the dry solids from the mass fractions.
-    r.solids_density = 1.0 / (c.ncm_mass_fraction / c.ncm_density +
-                              c.pvdf_mass_fraction / c.pvdf_density +
-                              c.cb_mass_fraction / c.cb_density);
+    r.solids_density = solids_density(c.ncm_mass_fraction, c.ncm_density, c.pvdf_mass_fraction,
+                                      c.pvdf_density, c.cb_mass_fraction, c.cb_density);
     // Eq. 3 (I-4: the prefactor is the solids mass fraction x_s).
     const double xs = c.solids_mass_fraction, xf = 1.0 - xs;
     r.wet_film_height = c.areal_loading / xs * (xf / c.solvent_density + xs / r.solids_density);
