@@ -11,6 +11,6 @@ out=results/analysis_bench
 mkdir -p "$out"
 data="$out/settled_75um.data"
 [[ -f "$data" ]] || gunzip -c ../shared/peers/data/settled_75um.data.gz > "$data"
-/usr/bin/time -v ./build/drydem analyze "$data" -o "$out/run" --voxel "$voxel" --threads "$threads" --no-plots \
+/usr/bin/time -v ./build/drydem analyze "$data" -o "$out/run" --overwrite --voxel "$voxel" --threads "$threads" --no-plots \
     2> "$out/time.txt" | tee "$out/analyze.txt"
 grep -E "Elapsed|Maximum resident" "$out/time.txt"

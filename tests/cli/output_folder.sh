@@ -3,7 +3,8 @@
 # without --overwrite; --overwrite removes the old run's files (its old frames) and keeps the
 # user's; a folder without a run is never cleared; a folder locked by another run is refused; a
 # quote in run.name still resumes (config.toml written by the TOML library); a run refused by the
-# stability guard at its start writes summary.json with "failed" (exit 1).
+# stability guard at its start writes summary.json with "failed" (exit 1); `dryer`, `analyze` and
+# `study` protect their -o folders the same way.
 # usage: output_folder.sh DRYDEM WORKDIR
 set -u
 drydem=$1 work=$2
@@ -56,7 +57,39 @@ expect 2 "is in use by another drydem run" -- run -o "$quoted" --overwrite "${qu
 expect 2 "is in use by another drydem run" -- run --resume "$quoted" --quiet --no-plots
 kill "$holder"; wait "$holder" 2>/dev/null
 
-# 5. numerics.stability_guard = "refuse" refusing at the start: summary.json says failed.
+# 5. `dryer`, `analyze` and `study` protect their folders the same way, each knowing its own outputs.
+dry="$work/dryer"
+expect 0 "" -- dryer -o "$dry" --no-plots
+echo note >"$dry/my_notes.txt"
+expect 2 "holds a previous dryer model run" -- dryer -o "$dry" --no-plots
+expect 0 "" -- dryer -o "$dry" --overwrite --no-plots
+[[ -f "$dry/my_notes.txt" && -s "$dry/dryer.json" ]] || fail "dryer --overwrite lost the user's file or wrote nothing"
+expect 2 "holds no DryDEM dryer model run" -- dryer -o "$old" --overwrite --no-plots
+expect 2 "holds no DryDEM run" -- run -o "$dry" --overwrite "${quick[@]}"
+bed="$work/bed.csv"
+printf 'id,type,radius_m,x_m,y_m,z_m\n1,1,3e-6,10e-6,10e-6,3e-6\n2,1,3e-6,20e-6,20e-6,3e-6\n' >"$bed"
+box=(--set film.box_x=36um --set film.box_y=36um --no-voxels --no-plots --quiet)
+expect 0 "" -- analyze "$bed" "${box[@]}"
+[[ -s "$work/analysis/analysis.json" ]] || fail "analyze wrote no analysis.json beside the file"
+expect 2 "holds a previous analysis" -- analyze "$bed" "${box[@]}"
+expect 0 "" -- analyze "$bed" "${box[@]}" --overwrite
+expect 2 "holds no DryDEM analysis" -- analyze "$bed" "${box[@]}" -o "$dry"
+flock "$work/analysis/.drydem.lock" sleep 20 &
+holder=$!
+sleep 0.5
+expect 2 "is in use by another drydem run" -- analyze "$bed" "${box[@]}" --overwrite
+kill "$holder"; wait "$holder" 2>/dev/null
+study="$work/study"
+mkdir -p "$study/runs/L9.99_s1" && touch "$study/log.txt" "$study/study.csv"
+expect 2 "holds a previous study" -- study -o "$study" --loadings 0.05 --seeds 1 --threads 1 --no-plots --quiet
+[[ -d "$study/runs/L9.99_s1" ]] || fail "a refused study touched the old study's runs"
+expect 2 "holds no DryDEM run" -- run -o "$study" --overwrite "${quick[@]}"
+# A study that fails at once (a film thinner than its particles): the old runs are gone.
+expect 1 "" -- study -o "$study" --overwrite --loadings 0.05 --seeds 1 --threads 1 --no-plots --quiet
+[[ -e "$study/runs/L9.99_s1" ]] && fail "study --overwrite left the old study's run"
+expect 2 "holds no DryDEM study" -- study -o "$dry" --overwrite --loadings 0.05 --seeds 1 --no-plots --quiet
+
+# 6. numerics.stability_guard = "refuse" refusing at the start: summary.json says failed.
 refused="$work/refused"
 expect 1 "stability bound" -- run -o "$refused" --set 'numerics.stability_guard="refuse"' \
   --set run.time_step=1e-6s "${quick[@]}"

@@ -104,6 +104,7 @@ int main(int argc, char** argv) {
     dryer->add_option("-o,--output", out_dir, "output folder (default out/<name>-dryer-<timestamp>)");
     dryer->add_option("--set", sets, "override a key, e.g. --set dryer.preset=physical")->take_all();
     dryer->add_flag("--no-plots", no_plots, "skip the matplotlib plot");
+    dryer->add_flag("--overwrite", overwrite, "replace a previous dryer model run's outputs in the -o folder");
     dryer->add_flag("--table2", table2, "print paper Table 2 against the model (both presets) instead");
 
     auto* check = cli.add_subcommand("check", "validate a configuration and print every derived quantity");
@@ -133,6 +134,7 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     study->add_flag("--quiet", study_opt.quiet, "only the final table");
     study->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+    study->add_flag("--overwrite", overwrite, "replace a previous study's outputs (its runs included) in the -o folder");
 
     app::AnalyzeOptions an;
     std::string an_voxel, an_dz, an_gap, an_config, an_pore_top;
@@ -163,6 +165,7 @@ int main(int argc, char** argv) {
     analyze->add_option("--threads", an.threads, "OpenMP threads (default all cores)")->check(CLI::PositiveNumber);
     analyze->add_flag("--quiet", an.quiet, "only the result lines");
     analyze->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+    analyze->add_flag("--overwrite", overwrite, "replace a previous analysis in the output folder");
 
     app::BenchOptions bench_opt;
     auto* bench = cli.add_subcommand("bench", "the peers' granular benchmark (../shared/peers) in DryDEM");
@@ -225,6 +228,8 @@ int main(int argc, char** argv) {
             if (an.analysis.contact_gap < 0.0) throw InputError(fmt::format("--contact-gap {}: must be >= 0", an_gap));
             an.output_dir = out_dir.empty() ? an.snapshot.parent_path() / "analysis" : std::filesystem::path(out_dir);
             an.plots = !no_plots;
+            const OutputLock lock(an.output_dir);
+            prepare_output_folder(an.output_dir, analysis_output(), overwrite);
             if (!an.quiet)
                 fmt::print("config: {}\n", an_config.empty() ? std::string("<embedded default>") : an_config);
             return app::run_analyze(c, an);
@@ -250,6 +255,8 @@ int main(int argc, char** argv) {
                 if (item.find_first_not_of("0123456789.eE+- ") == std::string::npos) item += " mg/cm^2";
                 study_opt.loadings.push_back(parse_quantity(item, Dimension::areal_density, "--loadings"));
             }
+            const OutputLock lock(study_opt.output_dir);
+            prepare_output_folder(study_opt.output_dir, study_output(), overwrite);
             return app::run_study(c, study_opt);
         }
         if (*dryer) {
@@ -261,6 +268,8 @@ int main(int argc, char** argv) {
             app::DryerOptions d;
             d.output_dir = out_dir.empty() ? default_output_dir(c, "-dryer") : out_dir;
             d.plots = !no_plots;
+            const OutputLock lock(d.output_dir);
+            prepare_output_folder(d.output_dir, dryer_output(), overwrite);
             return app::run_dryer(c, d);
         }
         if (!*run) {
@@ -289,7 +298,7 @@ int main(int argc, char** argv) {
         // Never two runs in one folder, never a new run over an old one's files (old frames would
         // mix with the new); a resumed run continues its own folder as it is.
         const OutputLock lock(o.output_dir);
-        if (!o.resume) prepare_output_folder(o.output_dir, overwrite);
+        if (!o.resume) prepare_output_folder(o.output_dir, run_output(), overwrite);
         if (!particles.empty()) o.particles_file = particles;
         o.quiet = quiet;
         o.plots = !no_plots;

@@ -17,20 +17,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// A run's own entry: a known output, a coupled run's iter_N folder, or an atomic write's .tmp.
-bool is_run_output(const std::string& name) {
-    const auto& known = run_output_names();
-    if (std::find(known.begin(), known.end(), name) != known.end()) return true;
-    if (name.starts_with("iter_") && name.size() > 5 &&
+/// An entry `kind` wrote: a known output, a coupled run's iter_N folder, or an atomic write's .tmp.
+bool is_own_output(const OutputKind& kind, const std::string& name) {
+    if (std::find(kind.names.begin(), kind.names.end(), name) != kind.names.end()) return true;
+    if (kind.numbered_iterations && name.starts_with("iter_") && name.size() > 5 &&
         name.find_first_not_of("0123456789", 5) == std::string::npos)
         return true;
-    return name.ends_with(".tmp") && is_run_output(name.substr(0, name.size() - 4));
+    return name.ends_with(".tmp") && is_own_output(kind, name.substr(0, name.size() - 4));
 }
 
-/// A folder DryDEM wrote: a run's log beside its config (or a coupled run's coupling.json).
-bool holds_a_run(const fs::path& dir) {
-    return fs::exists(dir / "log.txt") &&
-           (fs::exists(dir / "config.toml") || fs::exists(dir / "coupling.json"));
+bool present(const fs::path& p) {
+    std::error_code ec;
+    return fs::exists(p, ec);
 }
 
 std::string listing(const std::vector<std::string>& names) {
@@ -42,14 +40,52 @@ std::string listing(const std::vector<std::string>& names) {
 
 } // namespace
 
-const std::vector<std::string>& run_output_names() {
-    static const std::vector<std::string> names = {
-        "config.toml", "log.txt",  "summary.json", "timeseries.csv", "initial.csv", "final.csv",
-        "snapshots",   "checkpoint", "analysis",   "plots",          "coupling.json"};
-    return names;
+const OutputKind& run_output() {
+    // A run's log beside its config, or a coupled run's coupling.json; a study's folder (which
+    // has the first two as well) is not a run's.
+    static const OutputKind k{
+        "run",
+        {"config.toml", "log.txt", "summary.json", "timeseries.csv", "initial.csv", "final.csv", "snapshots",
+         "checkpoint", "analysis", "plots", "coupling.json"},
+        true,
+        [](const fs::path& d) {
+            return present(d / "log.txt") && (present(d / "config.toml") || present(d / "coupling.json")) &&
+                   !present(d / "runs");
+        },
+        "continue that run with `drydem run --resume {dir}`, "};
+    return k;
 }
 
-void prepare_output_folder(const fs::path& dir, bool overwrite) {
+const OutputKind& study_output() {
+    // Its log and resolved config are written before the first case starts.
+    static const OutputKind k{
+        "study",
+        {"config.toml", "log.txt", "runs", "study.csv", "study.json", "plots"},
+        false,
+        [](const fs::path& d) { return present(d / "runs") && present(d / "log.txt"); },
+        ""};
+    return k;
+}
+
+const OutputKind& dryer_output() {
+    static const OutputKind k{"dryer model run", {"dryer.json", "dryer.csv", "plots"}, false,
+                              [](const fs::path& d) { return present(d / "dryer.json") || present(d / "dryer.csv"); },
+                              ""};
+    return k;
+}
+
+const OutputKind& analysis_output() {
+    static const OutputKind k{
+        "analysis",
+        {"analysis.json", "profiles.csv", "transport_convergence.csv", "binder_profile.csv", "psd_chord.csv",
+         "psd_local_thickness.csv", "structure.raw", "structure.json", "structure.mhd", "structure.tif", "plots"},
+        false,
+        [](const fs::path& d) { return present(d / "analysis.json") || present(d / "profiles.csv"); },
+        ""};
+    return k;
+}
+
+void prepare_output_folder(const fs::path& dir, const OutputKind& kind, bool overwrite) {
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(fmt::format("output folder {}: exists and is not a folder", dir.string()));
@@ -60,23 +96,23 @@ void prepare_output_folder(const fs::path& dir, bool overwrite) {
         const std::string name = e.path().filename().string();
         // The lock, and the console capture a study opens before it starts the run here.
         if (name == output_lock_name || name == "console.txt") continue;
-        (is_run_output(name) ? ours : foreign).push_back(name);
+        (is_own_output(kind, name) ? ours : foreign).push_back(name);
     }
     if (ours.empty() && foreign.empty()) return;
     std::sort(ours.begin(), ours.end());
     std::sort(foreign.begin(), foreign.end());
-    if (!holds_a_run(dir))
+    if (!kind.holds(dir))
         throw InputError(fmt::format(
-            "output folder {} is not empty ({}) and holds no DryDEM run; choose a new or empty folder "
+            "output folder {} is not empty ({}) and holds no DryDEM {}; choose a new or empty folder "
             "with -o (it is not cleared, not even with --overwrite)",
-            dir.string(), listing(foreign.empty() ? ours : foreign)));
+            dir.string(), listing(foreign.empty() ? ours : foreign), kind.noun));
     if (!overwrite)
         throw InputError(fmt::format(
-            "output folder {} holds a previous run ({}); choose another folder with -o, continue "
-            "that run with `drydem run --resume {}`, or replace its outputs with --overwrite",
-            dir.string(), listing(ours), dir.string()));
-    // --overwrite: remove what the old run wrote (old frames would mix with the new ones); the
-    // user's own files stay.
+            "output folder {} holds a previous {} ({}); choose another folder with -o, {}or replace its "
+            "outputs with --overwrite",
+            dir.string(), kind.noun, listing(ours), fmt::format(fmt::runtime(kind.resume_hint), fmt::arg("dir", dir.string()))));
+    // --overwrite: remove what the old output was made of (old frames would mix with the new
+    // ones); the user's own files stay.
     for (const std::string& name : ours) {
         fs::remove_all(dir / name, ec);
         if (ec)

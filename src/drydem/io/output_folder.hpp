@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The output folder of `drydem run`: a new run never mixes its files with another run's (old
-// frames left beside new ones, a log written by two processes), and two runs never write into one
-// folder at the same time.
+// The output folders of `drydem run`, `study`, `dryer` and `analyze`: a new output never mixes its
+// files with an older one's (old frames left beside new ones, a study table beside another
+// study's runs, a log written by two processes), and two commands never write into one folder at
+// the same time.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -9,21 +10,33 @@
 
 namespace drydem {
 
-/// The files and folders a run writes into its output folder (README "Outputs"); --overwrite
-/// removes exactly these.
-[[nodiscard]] const std::vector<std::string>& run_output_names();
+/// What one command writes into its output folder, and how a folder it wrote is recognised.
+struct OutputKind {
+    std::string noun;               ///< "run", "study", "dryer model run", "analysis"
+    std::vector<std::string> names; ///< the entries it writes (README "Outputs"); --overwrite removes these
+    bool numbered_iterations = false;   ///< also iter_N folders (a coupled run, paper Sec. 8)
+    bool (*holds)(const std::filesystem::path& dir) = nullptr; ///< the folder holds such an output
+    std::string resume_hint;        ///< how to continue one, or empty
+};
 
-/// Makes `dir` ready for a new run: creates it when missing; an empty folder is used as it is; a
-/// folder holding a previous run is refused (InputError naming --overwrite and --resume) unless
-/// `overwrite`, which removes that run's outputs (run_output_names(), also iter_N of a coupled
-/// run) and nothing else; a non-empty folder without a run is refused even with `overwrite` (it
-/// is not ours to clear). The lock file (OutputLock) does not count as content.
-void prepare_output_folder(const std::filesystem::path& dir, bool overwrite);
+/// The kinds: `drydem run` (also --couple-dryer), `drydem study`, `drydem dryer`, `drydem analyze`.
+[[nodiscard]] const OutputKind& run_output();
+[[nodiscard]] const OutputKind& study_output();
+[[nodiscard]] const OutputKind& dryer_output();
+[[nodiscard]] const OutputKind& analysis_output();
+
+/// Makes `dir` ready for a new output of `kind`: creates it when missing; an empty folder is used
+/// as it is; a folder holding a previous output of this kind is refused (InputError naming
+/// --overwrite, and how to continue it where it can be) unless `overwrite`, which removes that
+/// output's entries (kind.names, an atomic write's leftover .tmp, iter_N of a coupled run) and
+/// nothing else; any other non-empty folder is refused even with `overwrite` (it is not ours to
+/// clear). The lock file (OutputLock) and a study's console capture do not count as content.
+void prepare_output_folder(const std::filesystem::path& dir, const OutputKind& kind, bool overwrite);
 
 /// An exclusive lock on `dir` (created when missing) for the lifetime of the object: `dir/.drydem.lock`, locked with
 /// flock(2), so the kernel releases it when the process ends in any way (SIGKILL included) and a
-/// killed run can be resumed at once. A second run into the same folder gets an InputError naming
-/// the process that holds it.
+/// killed run can be resumed at once. A second command into the same folder gets an InputError
+/// naming the process that holds it.
 class OutputLock {
 public:
     explicit OutputLock(const std::filesystem::path& dir);
