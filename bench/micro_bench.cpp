@@ -9,9 +9,9 @@ using namespace drydem;
 namespace {
 PairParams drying_pair() {
     PairParams p;
-    p.contact = mix_hertz_mindlin(142e9, 0.3, 142e9, 0.3, 0.5, 0.8, 0.0);
-    p.van_der_waals = {4.64e-13, 5e-9, 0.75e-6};
-    p.lubrication = {1.801, 0.1};
+    law<HertzMindlinLaw>(p) = mix_hertz_mindlin(142e9, 0.3, 142e9, 0.3, 0.5, 0.8, 0.0);
+    law<VanDerWaalsLaw>(p) = {4.64e-13, 5e-9, 0.75e-6};
+    law<LubricationLaw>(p) = {1.801, 0.1};
     return p;
 }
 
@@ -19,7 +19,7 @@ void pair_interaction_bench(benchmark::State& state, double gap) {
     const PairParams p = drying_pair();
     const double r = 0.75e-6;
     const Vec3 d{2 * r + gap, 1e-8, 2e-8};
-    Vec3 hist{};
+    PairState hist{};
     for (auto _ : state) {
         const PairGeometry g = make_pair_geometry(d, norm(d), r, r, 2e-15, 2e-15, {1, 0, 0},
                                                   {0, 0.1, 0}, {0, 0, 1e3}, {1e3, 0, 0});

@@ -20,7 +20,8 @@ LAYERS = [
     ["io"],                            # config (units, schema, defaults), particle files, output folder
     ["setup"],                         # formulation -> recipe and particles; Eq. 4 (setup/solids)
     ["dryer"],                         # the dryer model (uses Eq. 4 from setup/solids)
-    ["forces", "neighbor", "integrate"],  # pair and body laws; neighbour list; step bounds
+    ["forces", "integrate"],           # pair and body laws (and their list); step bounds
+    ["neighbor"],                      # neighbour list, holding the pair laws' per-pair state
     ["engine"],                        # the simulation: pair loop, integration, stability estimate
     ["analysis"],                      # structure analysis of a particle set
     ["output"],                        # writers of results: frames, series, dump, analysis, checkpoint

@@ -23,7 +23,7 @@ std::size_t index_of(const ParticleStore& p, std::uint32_t id) {
 /// it slides; no fluid, no substrate.
 ForceField cohesive_contact() {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.8);
-    ff.pair[0].van_der_waals = {4.64e-13, 5e-9, 0.75e-6};
+    law<VanDerWaalsLaw>(ff.pair[0]) = {4.64e-13, 5e-9, 0.75e-6};
     ff.substrate_on = false;
     return ff;
 }
@@ -32,7 +32,7 @@ ForceField cohesive_contact() {
 /// Hertz balances the van der Waals pull, both drifting at 30 m/s along +x; two spectators.
 Simulation make_pair(const Vec3& centre, const EngineSettings& s) {
     const ForceField ff = cohesive_contact();
-    const double e_star = ff.pair[0].contact.e_star, r_star = 0.5 * kR;
+    const double e_star = law<HertzMindlinLaw>(ff.pair[0]).e_star, r_star = 0.5 * kR;
     const double overlap = std::cbrt(std::pow(3 * kFvdw / (4 * e_star * std::sqrt(r_star)), 2.0));
     const Vec3 n{std::cos(0.5), std::sin(0.5), 0.0};
     const double d = 2 * kR - overlap;
@@ -56,18 +56,21 @@ void drive(Simulation& sim) {
     p.omega[a] = p.omega[b] = Vec3{};
 }
 
-struct PairState {
+struct Snapshot {
     Vec3 force[2], torque[2], separation;
     std::vector<NeighborList::Entry> history;
 };
 
-PairState state(const Simulation& sim) {
+/// The contact's tangential spring ξ in a kept pair state.
+Vec3 spring(NeighborList::Entry e) { return PairLaws::state<HertzMindlinLaw>(e.state).spring; }
+
+Snapshot state(const Simulation& sim) {
     const ParticleStore& p = sim.particles();
     const std::size_t a = index_of(p, 1), b = index_of(p, 2);
     return {{p.force[a], p.force[b]},
             {p.torque[a], p.torque[b]},
             sim.box().minimum_image(p.position[a], p.position[b]),
-            sim.neighbors().history_entries(p)};
+            sim.neighbors().state_entries(p)};
 }
 } // namespace
 
@@ -78,7 +81,7 @@ TEST(ContactHistory, PeriodicBoundaryRebuildsAndSortsKeepHistory) {
     // Boundary: the contact point sits on x = 0 = L_x; sorted at every rebuild.
     Simulation boundary = make_pair({0.0, 20e-6, 20e-6}, {1e-11, 0.1e-6, 1, 1});
     // Scales: the van der Waals load, the Coulomb length μ F_n / S_t of the history.
-    const double s_t = 8 * interior.forces().pair[0].contact.g_star * std::sqrt(0.5 * kR * 6.9e-8);
+    const double s_t = 8 * law<HertzMindlinLaw>(interior.forces().pair[0]).g_star * std::sqrt(0.5 * kR * 6.9e-8);
     const double f_scale = kFvdw, h_scale = 0.8 * kFvdw / s_t;
     bool wrapped = false;
     double max_f = 0, max_h = 0, max_sep = 0, max_history = 0;
@@ -91,7 +94,7 @@ TEST(ContactHistory, PeriodicBoundaryRebuildsAndSortsKeepHistory) {
         boundary.step();
         const ParticleStore& pb = boundary.particles();
         wrapped = wrapped || pb.position[index_of(pb, 1)].x < x_before;
-        const PairState a = state(interior), b = state(boundary);
+        const Snapshot a = state(interior), b = state(boundary);
         ASSERT_EQ(a.history.size(), 1u) << "step " << s; // one contact, keyed (owner 2, partner 1)
         ASSERT_EQ(b.history.size(), 1u) << "step " << s;
         EXPECT_EQ(b.history[0].owner_id, 2u);
@@ -100,9 +103,9 @@ TEST(ContactHistory, PeriodicBoundaryRebuildsAndSortsKeepHistory) {
             max_f = std::max(max_f, norm(a.force[k] - b.force[k]) / f_scale);
             max_f = std::max(max_f, norm(a.torque[k] - b.torque[k]) / (f_scale * kR));
         }
-        max_h = std::max(max_h, norm(a.history[0].history - b.history[0].history) / h_scale);
+        max_h = std::max(max_h, norm(spring(a.history[0]) - spring(b.history[0])) / h_scale);
         max_sep = std::max(max_sep, norm(a.separation - b.separation) / (2 * kR));
-        max_history = std::max(max_history, norm(a.history[0].history));
+        max_history = std::max(max_history, norm(spring(a.history[0])));
     }
     EXPECT_TRUE(wrapped);
     EXPECT_NE(boundary.particles().id, interior.particles().id); // storage order re-sorted
@@ -128,7 +131,7 @@ TEST(ContactHistory, PeriodicBoundaryRebuildsAndSortsKeepHistory) {
     for (int s = 0; s < 200 && opened_at < 0; ++s) {
         interior.step();
         boundary.step();
-        const PairState a = state(interior), b = state(boundary);
+        const Snapshot a = state(interior), b = state(boundary);
         if (norm(a.separation) > 2 * kR) {
             opened_at = s;
             EXPECT_TRUE(a.history.empty());
@@ -137,7 +140,7 @@ TEST(ContactHistory, PeriodicBoundaryRebuildsAndSortsKeepHistory) {
             EXPECT_EQ(boundary.stats().contacts, 0u);
         } else {
             ASSERT_EQ(b.history.size(), 1u);
-            EXPECT_LT(norm(a.history[0].history - b.history[0].history) / h_scale, 1e-12);
+            EXPECT_LT(norm(spring(a.history[0]) - spring(b.history[0])) / h_scale, 1e-12);
         }
         EXPECT_LT(norm(a.force[0] - b.force[0]) / f_scale, 1e-11);
     }

@@ -131,7 +131,7 @@ TEST(GuardClusters, ExplicitBoundExceedsThePerPairEstimate) {
     const PairGeometry g = make_pair_geometry(d, norm(d), p.radius[0], p.radius[1], p.mass[0],
                                               p.mass[1], {}, {}, {}, {});
     const PairResistance lub =
-        lubrication_resistance(g, sim.forces().pair_params(p.species[0], p.species[1]).lubrication);
+        lubrication_resistance(g, law<LubricationLaw>(sim.forces().pair_params(p.species[0], p.species[1])));
     const double per_pair = std::max(lub.normal, 3.5 * lub.sliding) * (p.inv_mass[1] + p.inv_mass[0]);
     EXPECT_GT(sim.stability_estimate().damping_rate, 1.8 * per_pair);
 }

@@ -144,13 +144,13 @@ TEST(Stability, SnapInRateUsesTheCurrentGap) {
     ForceField ff = all_models();
     const PairParams cb = ff.pair_params(5, 5);
     const double gap = 0.35e-6;
-    ASSERT_GT(gap, cb.van_der_waals.min_gap);
-    ASSERT_LT(gap, cb.van_der_waals.cutoff_gap);
+    ASSERT_GT(gap, law<VanDerWaalsLaw>(cb).min_gap);
+    ASSERT_LT(gap, law<VanDerWaalsLaw>(cb).cutoff_gap);
     ParticleStore p;
     p.add(1, 5, kR, kRhoCb, {20e-6, 20e-6, 20e-6});
     p.add(2, 5, kR, kRhoCb, {20e-6 + 2 * kR + gap, 20e-6, 20e-6});
     const double r_eff = 0.5 * kR;
-    const double k = cb.van_der_waals.hamaker * r_eff / (3.0 * gap * gap * gap);
+    const double k = law<VanDerWaalsLaw>(cb).hamaker * r_eff / (3.0 * gap * gap * gap);
     const double expected = std::sqrt(k * 2.0 / p.mass[0]);
     for (double skin : {0.0, 0.1e-6, 0.3e-6}) {
         const Simulation sim(p, Box{40e-6, 40e-6}, ff, {1e-11, skin, 1});

@@ -182,9 +182,12 @@ TEST(Resistance, SelfBlocksAreTheDiagonalBlocksAndBoundTheMatrix) {
     const HertzMindlinParams hm = mix_hertz_mindlin(142e9, 0.3, 142e9, 0.3, 0.5, 0.8, 0.0);
     for (double h : {-0.03e-6, 0.05e-6}) {
         const PairGeometry g = geometry(h, Eigen::VectorXd::Zero(12));
-        Vec3 xi{};
+        PairState xi{};
         PairResistance c{};
-        pair_interaction(g, PairParams{hm, {}, kLub}, xi, 0.0, &c);
+        PairParams pp{};
+        law<HertzMindlinLaw>(pp) = hm;
+        law<LubricationLaw>(pp) = kLub;
+        pair_interaction(g, pp, xi, 0.0, &c);
         const Mat r = pair_matrix(c, g.n);
         SelfBlock di{}, dj{};
         add_self_block(di, c, g.n, c.lever_i, 1.0);

@@ -50,32 +50,32 @@ TEST(Scaling, DryingForceFieldPairTable) {
     const int cb = r.cb_species();
     // CB-CB (M-3, C-13: cut-off = r_L = 0.75 um).
     const PairParams& cc = ff.pair_params(cb, cb);
-    expect_rel(cc.van_der_waals.hamaker, 4.64e-13);
-    expect_rel(cc.van_der_waals.min_gap, 5e-9);
-    expect_rel(cc.van_der_waals.cutoff_gap, 0.75e-6);
-    expect_rel(cc.lubrication.viscosity, 1.801);
-    expect_rel(cc.lubrication.kappa_c, 0.1);
+    expect_rel(law<VanDerWaalsLaw>(cc).hamaker, 4.64e-13);
+    expect_rel(law<VanDerWaalsLaw>(cc).min_gap, 5e-9);
+    expect_rel(law<VanDerWaalsLaw>(cc).cutoff_gap, 0.75e-6);
+    expect_rel(law<LubricationLaw>(cc).viscosity, 1.801);
+    expect_rel(law<LubricationLaw>(cc).kappa_c, 0.1);
     // NCM-CB: 10 nm, cut-off 2R* per class (C-15): 1.219 / 1.252 / 1.277 / 1.301 / 1.325 um.
     const double r_l[5] = {1.219e-6, 1.252e-6, 1.277e-6, 1.301e-6, 1.325e-6};
     for (int k = 0; k < 5; ++k) {
         for (const PairParams* p : {&ff.pair_params(k, cb), &ff.pair_params(cb, k)}) {
-            expect_rel(p->van_der_waals.hamaker, 9.5e-13);
-            expect_rel(p->van_der_waals.min_gap, 10e-9);
-            EXPECT_NEAR(p->van_der_waals.cutoff_gap, r_l[k], 0.0005e-6) << "class " << k;
+            expect_rel(law<VanDerWaalsLaw>(*p).hamaker, 9.5e-13);
+            expect_rel(law<VanDerWaalsLaw>(*p).min_gap, 10e-9);
+            EXPECT_NEAR(law<VanDerWaalsLaw>(*p).cutoff_gap, r_l[k], 0.0005e-6) << "class " << k;
         }
     }
-    expect_rel(ff.pair_params(0, cb).van_der_waals.cutoff_gap, 2 * 3.25 * 0.75 / 4.0 * 1e-6); // exact
+    expect_rel(law<VanDerWaalsLaw>(ff.pair_params(0, cb)).cutoff_gap, 2 * 3.25 * 0.75 / 4.0 * 1e-6); // exact
     // NCM-NCM: 2.11e-12 J, 50 nm; NCM(6.50)-NCM(11.35) r_L = 4.133 um.
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 5; ++j) {
-            expect_rel(ff.pair_params(i, j).van_der_waals.hamaker, 2.11e-12);
-            expect_rel(ff.pair_params(i, j).van_der_waals.min_gap, 50e-9);
+            expect_rel(law<VanDerWaalsLaw>(ff.pair_params(i, j)).hamaker, 2.11e-12);
+            expect_rel(law<VanDerWaalsLaw>(ff.pair_params(i, j)).min_gap, 50e-9);
         }
-    EXPECT_NEAR(ff.pair_params(0, 4).van_der_waals.cutoff_gap, 4.133e-6, 0.0005e-6);
+    EXPECT_NEAR(law<VanDerWaalsLaw>(ff.pair_params(0, 4)).cutoff_gap, 4.133e-6, 0.0005e-6);
     // Particle pairs: E* = 7.8022e10 Pa, G* = 1.6063e10 Pa, μ = 0.8 (M-10).
-    expect_rel(cc.contact.e_star, 7.8022e10, 1e-4);
-    expect_rel(cc.contact.g_star, 1.6063e10, 1e-4);
-    EXPECT_DOUBLE_EQ(cc.contact.friction, 0.8);
+    expect_rel(law<HertzMindlinLaw>(cc).e_star, 7.8022e10, 1e-4);
+    expect_rel(law<HertzMindlinLaw>(cc).g_star, 1.6063e10, 1e-4);
+    EXPECT_DOUBLE_EQ(law<HertzMindlinLaw>(cc).friction, 0.8);
 }
 
 TEST(Scaling, DryingForceFieldParticleForces) {
@@ -106,7 +106,7 @@ TEST(Scaling, DryingForceFieldParticleForces) {
     no_lub.lubrication = false;
     no_lub.substrate_lubrication = false;
     const ForceField off = make_drying_force_field(no_lub, r, scale_parameters(no_lub));
-    EXPECT_EQ(off.pair_params(5, 5).lubrication.viscosity, 0.0);
+    EXPECT_EQ(law<LubricationLaw>(off.pair_params(5, 5)).viscosity, 0.0);
     EXPECT_EQ(off.substrate_lubrication.viscosity, 0.0);
 }
 

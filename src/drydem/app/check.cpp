@@ -79,7 +79,7 @@ void print_check(const Config& c) {
                                             [](const SizeClass& a, const SizeClass& b) { return a.diameter < b.diameter; });
     const double rc = 0.5 * cb.diameter, m = cb.density * 4.0 / 3.0 * pi * rc * rc * rc;
     const double e_cb = cb.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
-    const HertzMindlinParams& hm = ff.pair_params(r.cb_species(), r.cb_species()).contact;
+    const HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair_params(r.cb_species(), r.cb_species()));
     const double tr = rayleigh_time(rc, cb.density, e_cb, c.poisson_ratio);
     const double cap = c.time_step_cap();
     fmt::print("\nTime step, smallest particle d = {:.3g} um, m = {:.4g} kg\n", cb.diameter * 1e6, m);

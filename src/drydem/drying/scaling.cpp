@@ -15,13 +15,13 @@ ScaledParameters scale_parameters(const Config& c) {
     s.gravity_scaled = c.gravity * k / b;              // Eq. 13 keeps v_level / v_settling
     s.drag_viscosity_physical = c.viscosity;
     s.drag_viscosity_scaled = c.viscosity / b;         // Eq. 10 with η/b
-    s.lubrication_viscosity = c.lubrication_uses_reduced_viscosity ? c.viscosity / b : c.viscosity;
+    s.lubrication_viscosity = lubrication_viscosity(c);
     s.hamaker_cb_cb[0] = c.hamaker_cb_cb;
     s.hamaker_ncm_cb[0] = c.hamaker_ncm_cb;
     s.hamaker_ncm_ncm[0] = c.hamaker_ncm_ncm;
-    s.hamaker_cb_cb[1] = c.hamaker_cb_cb * c.hamaker_factor;
-    s.hamaker_ncm_cb[1] = c.hamaker_ncm_cb * c.hamaker_factor;
-    s.hamaker_ncm_ncm[1] = c.hamaker_ncm_ncm * c.hamaker_factor;
+    s.hamaker_cb_cb[1] = scaled_hamaker(c.hamaker_cb_cb, c);
+    s.hamaker_ncm_cb[1] = scaled_hamaker(c.hamaker_ncm_cb, c);
+    s.hamaker_ncm_ncm[1] = scaled_hamaker(c.hamaker_ncm_ncm, c);
     s.surface_tension_physical = c.surface_tension;
     s.surface_tension_scaled = c.surface_tension * c.capillary_factor;
     s.shrinkage_rates_physical = c.shrinkage_rates;
@@ -57,33 +57,13 @@ ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
     const int n = int(recipe.species.size());
     ff.species_count = n;
     ff.pair.resize(std::size_t(n) * n);
-    auto modulus = [&](int sp) { return recipe.species[sp].is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus; };
+    // Each law maps its own keys (its from_config, beside the law).
     for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            const SizeClass &a = recipe.species[i], &b = recipe.species[j];
-            PairParams& p = ff.pair[std::size_t(i) * n + j];
-            p.contact = mix_hertz_mindlin(modulus(i), c.poisson_ratio, modulus(j), c.poisson_ratio,
-                                          c.restitution, c.friction, c.rolling_friction);
-            // M-3: Hamaker constant and minimum gap by material pair.
-            if (a.is_cb && b.is_cb) {
-                p.van_der_waals.hamaker = s.hamaker_cb_cb[1];
-                p.van_der_waals.min_gap = c.min_gap_cb_cb;
-            } else if (a.is_cb || b.is_cb) {
-                p.van_der_waals.hamaker = s.hamaker_ncm_cb[1];
-                p.van_der_waals.min_gap = c.min_gap_ncm_cb;
-            } else {
-                p.van_der_waals.hamaker = s.hamaker_ncm_ncm[1];
-                p.van_der_waals.min_gap = c.min_gap_ncm_ncm;
-            }
-            // C-13: default cut-off = the pair's lubrication radius r_L = 2R* (C-15).
-            const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
-            p.van_der_waals.cutoff_gap = c.vdw_cutoff > 0.0 ? c.vdw_cutoff : 2.0 * ra * rb / (ra + rb);
-            p.lubrication.viscosity = c.lubrication ? s.lubrication_viscosity : 0.0;
-            p.lubrication.kappa_c = c.kappa_c;
-        }
+        for (int j = 0; j < n; ++j)
+            ff.pair[std::size_t(i) * n + j] = PairLaws::from_config(c, recipe.species[i], recipe.species[j]);
     ff.substrate_on = true;
     for (int i = 0; i < n; ++i)
-        ff.substrate.push_back(mix_hertz_mindlin(modulus(i), c.poisson_ratio,
+        ff.substrate.push_back(mix_hertz_mindlin(HertzMindlinLaw::youngs_modulus(c, recipe.species[i]), c.poisson_ratio,
                                                  c.substrate_youngs_modulus, c.substrate_poisson_ratio,
                                                  c.restitution, c.substrate_friction, c.rolling_friction));
     ff.substrate_lubrication.viscosity = c.substrate_lubrication ? s.lubrication_viscosity : 0.0;

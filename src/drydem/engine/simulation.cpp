@@ -237,9 +237,9 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
                 }
                 const Vec3 d = box_.minimum_image(xi, p.position[j]);
                 const double dist2 = norm2(d);
-                Vec3& hist = nl_.history(s);
-                if (dist2 >= nl_.reach2(s)) {
-                    if (hist.x != 0.0 || hist.y != 0.0 || hist.z != 0.0) hist = Vec3{};
+                PairState& state = nl_.state(s);
+                if (dist2 >= nl_.reach2(s)) { // beyond every law's range: nothing is kept
+                    if (PairLaws::keeps(state)) state = PairState{};
                     continue;
                 }
                 const double rj = p.radius[j];
@@ -257,13 +257,13 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
                 PairForce f;
                 if constexpr (SelfBlocks) {
                     PairResistance r;
-                    f = pair_interaction(g, row[p.species[j]], hist, dt, &r);
+                    f = pair_interaction(g, row[p.species[j]], state, dt, &r);
                     if (r.normal > 0.0 || r.sliding > 0.0 || r.rolling > 0.0) {
                         add_self_block(di, r, g.n, r.lever_i, 1.0);
                         add_self_block(local ? block[j] : own.block[j], r, g.n, r.lever_j, -1.0);
                     }
                 } else {
-                    f = pair_interaction(g, row[p.species[j]], hist, dt);
+                    f = pair_interaction(g, row[p.species[j]], state, dt);
                 }
                 fi += f.force_i;
                 ti += f.torque_i;

@@ -137,44 +137,20 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
                                                         p.mass[j], {}, {}, {}, {});
             PairGeometry g = now;
             g.gap -= skin; // the closest this pair can come before the next rebuild
-            auto dissipative = [&](const PairGeometry& at) {
-                PairResistance c = lubrication_resistance(at, pp.lubrication);
-                if (at.gap < 0.0) {
-                    const HertzMindlinCoefficients co =
-                        hertz_mindlin_coefficients(at.r_eff, -at.gap, at.m_eff, pp.contact);
-                    c.normal += co.gamma_n;
-                    c.sliding += co.gamma_t;
-                }
-                c.lever_i = at.r_i + 0.5 * at.gap;
-                c.lever_j = at.r_j + 0.5 * at.gap;
-                return c;
-            };
             if (!semi) {
-                const PairResistance c = dissipative(g);
+                const PairResistance c = PairLaws::resistance(g, pp);
                 if (c.normal > 0.0 || c.sliding > 0.0)
                     damping_t.pairs.push_back({std::uint32_t(i), j, g.n, c});
-            } else if (now.gap <= 2.0 * now.r_eff || now.gap < 0.0) {
-                const PairResistance c = dissipative(now);
-                add_self_block((*blocks_t)[i], c, now.n, c.lever_i, 1.0);
-                add_self_block((*blocks_t)[j], c, now.n, c.lever_j, -1.0);
+            } else {
+                const PairResistance c = PairLaws::resistance(now, pp);
+                if (c.normal > 0.0 || c.sliding > 0.0 || c.rolling > 0.0 || c.twisting > 0.0) {
+                    add_self_block((*blocks_t)[i], c, now.n, c.lever_i, 1.0);
+                    add_self_block((*blocks_t)[j], c, now.n, c.lever_j, -1.0);
+                }
             }
-            PairResistance k;
-            k.lever_i = g.r_i + 0.5 * g.gap;
-            k.lever_j = g.r_j + 0.5 * g.gap;
-            if (g.gap < 0.0) { // a contact, or one the pair can reach before the next rebuild
-                const HertzMindlinCoefficients co =
-                    hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, pp.contact);
-                k.normal = co.s_n;
-                k.sliding = co.s_t;
-            }
-            // Van der Waals snap-in at the current gap: its stiffness is negative (the attraction
-            // grows as the gap closes), so it cannot make the kick unstable, only the snap
-            // inaccurate; |dF/dh| bounds the snap's growth rate (see the file header).
-            if (pp.van_der_waals.hamaker != 0.0 && now.gap >= 0.0 &&
-                now.gap <= pp.van_der_waals.cutoff_gap) {
-                const double h = std::max(now.gap, pp.van_der_waals.min_gap);
-                k.normal += pp.van_der_waals.hamaker * now.r_eff / (3.0 * h * h * h);
-            }
+            // Each law's stiffness where it bounds its rate (pair_law.hpp): the contact springs
+            // at the skin-reduced gap, the van der Waals snap-in at the present one.
+            const PairResistance k = PairLaws::stiffness(g, now, pp);
             if (k.normal > 0.0) stiffness_t.pairs.push_back({std::uint32_t(i), j, g.n, k});
         }
     }

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: MIT
-// Composition of the force models (architecture.md "Principles"): the pair loop and the particle
-// loop call these two inline functions, which sum the laws in the order of model.md M-9.5. Adding a
-// model = one file in forces/ plus one line here (and its parameters in ForceField).
+// Composition of the force models: the pair laws as a compile-time list (pair_law.hpp), summed in
+// the order of M-9.5 (contact, van der Waals, lubrication, then the double layer, which the
+// paper leaves out); the body laws in particle_forces below. Adding a pair law = one file in
+// forces/ with its struct (pair_law.hpp's contract) and one entry in PairLaws; its config keys
+// go into io/ (ARCHITECTURE.md "Adding a pair law").
 #pragma once
 #include "drydem/forces/capillary_front.hpp"
+#include "drydem/forces/double_layer.hpp"
 #include "drydem/forces/gravity_buoyancy.hpp"
 #include "drydem/forces/hertz_mindlin.hpp"
 #include "drydem/forces/lubrication.hpp"
 #include "drydem/forces/pair_geometry.hpp"
+#include "drydem/forces/pair_law.hpp"
 #include "drydem/forces/stokes_drag.hpp"
 #include "drydem/forces/substrate.hpp"
 #include "drydem/forces/van_der_waals.hpp"
@@ -16,36 +20,31 @@
 
 namespace drydem {
 
-/// Pre-mixed parameters of one species pair (all values as used in the simulation, i.e. scaled).
-struct PairParams {
-    HertzMindlinParams contact;
-    VanDerWaalsParams van_der_waals;
-    LubricationParams lubrication;
-};
+/// The pair laws, in the order their forces are summed.
+using PairLaws = PairLawList<HertzMindlinLaw, VanDerWaalsLaw, LubricationLaw, DoubleLayerLaw>;
+
+/// Pre-mixed parameters of one species pair (all values as simulated, i.e. scaled), one entry
+/// per law: `PairLaws::params<VanDerWaalsLaw>(pp)`.
+using PairParams = PairLaws::Params;
+
+/// Law L's parameters in a species pair's entry: `law<VanDerWaalsLaw>(pp).hamaker`.
+template <class L>
+auto& law(PairParams& p) { return PairLaws::params<L>(p); }
+template <class L>
+const auto& law(const PairParams& p) { return PairLaws::params<L>(p); }
+
+/// What the laws keep per pair (the neighbour list holds one per slot).
+using PairState = PairLaws::State;
 
 /// Interaction range beyond contact of a pair [m] (M-9.4): the largest of the laws' ranges.
 inline double interaction_range(const PairParams& p, double r_i, double r_j) {
-    return std::max(van_der_waals_range(p.van_der_waals, r_i, r_j),
-                    lubrication_range(p.lubrication, r_i, r_j));
+    return PairLaws::range(p, r_i, r_j);
 }
 
-/// Pair forces in the order of M-9.5: contact (δ > 0), van der Waals, lubrication. When
-/// `resistance` is given, it receives the sum of the dissipative laws' resistances (contact
-/// damping and lubrication share the lever arms r + h/2, resistance.hpp).
-inline PairForce pair_interaction(const PairGeometry& g, const PairParams& p, Vec3& tangential,
+/// Pair forces of every law (PairLaws::force).
+inline PairForce pair_interaction(const PairGeometry& g, const PairParams& p, PairState& state,
                                   double dt, PairResistance* resistance = nullptr) {
-    PairForce f{};
-    if (g.gap < 0.0) f += hertz_mindlin(g, p.contact, tangential, dt, resistance);
-    else tangential = Vec3{}; // contact opened: history erased (M-2.3)
-    f += van_der_waals(g, p.van_der_waals);
-    const PairResistance lub = lubrication_resistance(g, p.lubrication);
-    f += resistance_force(lub, g.n, g.v_rel, g.omega_i, g.omega_j);
-    if (resistance) {
-        *resistance += lub;
-        resistance->lever_i = g.r_i + 0.5 * g.gap;
-        resistance->lever_j = g.r_j + 0.5 * g.gap;
-    }
-    return f;
+    return PairLaws::force(g, p, state, dt, resistance);
 }
 
 /// Every force acting on the particles, per species (pair table) and per particle.
@@ -99,7 +98,9 @@ inline ForceField uniform_contact_force_field(int species_count, double youngs_m
     const HertzMindlinParams hm = mix_hertz_mindlin(youngs_modulus, poisson_ratio, youngs_modulus,
                                                     poisson_ratio, restitution, friction,
                                                     rolling_friction);
-    ff.pair.assign(std::size_t(species_count) * species_count, PairParams{hm, {}, {}});
+    PairParams pp{};
+    PairLaws::params<HertzMindlinLaw>(pp) = hm;
+    ff.pair.assign(std::size_t(species_count) * species_count, pp);
     ff.substrate.assign(std::size_t(species_count), hm);
     return ff;
 }

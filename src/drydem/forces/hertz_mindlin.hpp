@@ -8,8 +8,11 @@
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
+#include "drydem/io/config.hpp"
+#include "drydem/setup/formulation.hpp"
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 namespace drydem {
 
@@ -159,5 +162,46 @@ inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& 
     }
     return {c.force_i, c.torque_i, c.torque_j};
 }
+
+/// The contact as a pair law (pair_law.hpp). Its state is the tangential spring ξ, erased when
+/// the contact opens (M-2.3).
+struct HertzMindlinLaw {
+    using Params = HertzMindlinParams;
+    struct State {
+        Vec3 spring; ///< ξ [m]
+    };
+    static constexpr std::string_view name = "hertz_mindlin";
+    static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
+    static PairForce force(const PairGeometry& g, const Params& p, State& s, double dt,
+                           PairResistance* damping) {
+        if (g.gap < 0.0) return hertz_mindlin(g, p, s.spring, dt, damping);
+        s.spring = Vec3{};
+        return {};
+    }
+    /// γ_n and γ_t (the sticking contact's, an upper bound of the damping it applies).
+    static PairResistance resistance(const PairGeometry& g, const Params& p) {
+        if (g.gap >= 0.0) return {};
+        const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, p);
+        return {co.gamma_n, co.gamma_t, 0.0, 0.0, 0.0, 0.0};
+    }
+    /// S_n, S_t at the overlap the pair can reach before the next rebuild: the springs stiffen
+    /// as the overlap grows, so the closest approach bounds their rate.
+    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry&, const Params& p) {
+        if (closest.gap >= 0.0) return {};
+        const HertzMindlinCoefficients co =
+            hertz_mindlin_coefficients(closest.r_eff, -closest.gap, closest.m_eff, p);
+        return {co.s_n, co.s_t, 0.0, 0.0, 0.0, 0.0};
+    }
+    static bool keeps(const State& s) { return norm2(s.spring) > 0.0; }
+    /// [materials] and [contact] keys (M-2.1): the two species' materials, one friction for
+    /// all pairs.
+    static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
+        return mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, youngs_modulus(c, b), c.poisson_ratio,
+                                 c.restitution, c.friction, c.rolling_friction);
+    }
+    static double youngs_modulus(const Config& c, const SizeClass& s) {
+        return s.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
+    }
+};
 
 } // namespace drydem

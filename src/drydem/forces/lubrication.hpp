@@ -19,9 +19,12 @@
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
+#include "drydem/io/config.hpp"
+#include "drydem/setup/formulation.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 namespace drydem {
 
@@ -76,5 +79,31 @@ inline PairForce lubrication(const PairGeometry& g, const LubricationParams& p) 
 inline double lubrication_range(const LubricationParams& p, double r_i, double r_j) {
     return p.viscosity > 0.0 ? lubrication_radius(r_i, r_j) : 0.0;
 }
+
+/// The viscosity of the lubrication laws: the full liquid viscosity (C-17), or η/b when
+/// lubrication.uses_reduced_viscosity.
+inline double lubrication_viscosity(const Config& c) {
+    return c.lubrication_uses_reduced_viscosity ? c.viscosity / c.viscosity_reduction : c.viscosity;
+}
+
+/// The law as a pair law (pair_law.hpp): purely dissipative, keeps nothing.
+struct LubricationLaw {
+    using Params = LubricationParams;
+    struct State {};
+    static constexpr std::string_view name = "lubrication";
+    static double range(const Params& p, double r_i, double r_j) { return lubrication_range(p, r_i, r_j); }
+    static PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance* r) {
+        const PairResistance lub = lubrication_resistance(g, p);
+        if (r) *r += lub;
+        return resistance_force(lub, g.n, g.v_rel, g.omega_i, g.omega_j);
+    }
+    static PairResistance resistance(const PairGeometry& g, const Params& p) { return lubrication_resistance(g, p); }
+    static PairResistance stiffness(const PairGeometry&, const PairGeometry&, const Params&) { return {}; }
+    static bool keeps(const State&) { return false; }
+    /// [lubrication] keys (M-4).
+    static Params from_config(const Config& c, const SizeClass&, const SizeClass&) {
+        return {c.lubrication ? lubrication_viscosity(c) : 0.0, c.kappa_c};
+    }
+};
 
 } // namespace drydem

@@ -8,7 +8,11 @@
 // Waals with the substrate (C-14). Conservative and central: no torque.
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
+#include "drydem/forces/resistance.hpp"
+#include "drydem/io/config.hpp"
+#include "drydem/setup/formulation.hpp"
 #include <algorithm>
+#include <string_view>
 
 namespace drydem {
 
@@ -24,9 +28,53 @@ inline PairForce van_der_waals(const PairGeometry& g, const VanDerWaalsParams& p
     return {(p.hamaker * g.r_eff / (6.0 * h_e * h_e)) * g.n, {}, {}};
 }
 
+/// A^s = k_A A: the scaled Hamaker constant (paper Sec. 4.1, k_A = scaling.hamaker_factor).
+inline double scaled_hamaker(double physical, const Config& c) { return physical * c.hamaker_factor; }
+
 /// Largest gap h at which the law acts (for the neighbour search); 0 when disabled.
 inline double van_der_waals_range(const VanDerWaalsParams& p, double /*r_i*/, double /*r_j*/) {
     return p.hamaker != 0.0 ? p.cutoff_gap : 0.0;
 }
+
+/// |dF/dh| = A^s R* / (3 h_e³) for h_min < h ≤ h_cut: the snap-in's rate (0 in overlap and
+/// below h_min, where the force is constant).
+inline double van_der_waals_stiffness(const PairGeometry& g, const VanDerWaalsParams& p) {
+    if (p.hamaker == 0.0 || g.gap < 0.0 || g.gap > p.cutoff_gap) return 0.0;
+    const double h = std::max(g.gap, p.min_gap);
+    return p.hamaker * g.r_eff / (3.0 * h * h * h);
+}
+
+/// The law as a pair law (pair_law.hpp): conservative, keeps nothing.
+struct VanDerWaalsLaw {
+    using Params = VanDerWaalsParams;
+    struct State {};
+    static constexpr std::string_view name = "van_der_waals";
+    static double range(const Params& p, double r_i, double r_j) { return van_der_waals_range(p, r_i, r_j); }
+    static PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance*) {
+        return van_der_waals(g, p);
+    }
+    static PairResistance resistance(const PairGeometry&, const Params&) { return {}; }
+    /// The snap-in at the present gap: its stiffness is negative (the attraction grows as the gap
+    /// closes), so it cannot make the kick unstable, only the snap inaccurate; |dF/dh| bounds the
+    /// snap's growth rate (docs/model.md "Stability guard"). Taken at the skin-reduced gap it
+    /// would put every pair within the skin at h_min and hold the step far below what the
+    /// contacts need.
+    static PairResistance stiffness(const PairGeometry&, const PairGeometry& now, const Params& p) {
+        return {van_der_waals_stiffness(now, p), 0.0, 0.0, 0.0, 0.0, 0.0};
+    }
+    static bool keeps(const State&) { return false; }
+    /// [van_der_waals] keys (M-3): Hamaker constant and minimum gap by material pair, scaled by
+    /// scaling.hamaker_factor (paper Sec. 4.1); cut-off 0 = the pair's r_L = 2R* (C-13, C-15).
+    static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
+        Params p;
+        if (a.is_cb && b.is_cb) p = {c.hamaker_cb_cb, c.min_gap_cb_cb, 0.0};
+        else if (a.is_cb || b.is_cb) p = {c.hamaker_ncm_cb, c.min_gap_ncm_cb, 0.0};
+        else p = {c.hamaker_ncm_ncm, c.min_gap_ncm_ncm, 0.0};
+        p.hamaker = scaled_hamaker(p.hamaker, c);
+        const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
+        p.cutoff_gap = c.vdw_cutoff > 0.0 ? c.vdw_cutoff : 2.0 * ra * rb / (ra + rb);
+        return p;
+    }
+};
 
 } // namespace drydem

@@ -60,6 +60,13 @@ struct Config {
     double kappa_c = 0.1;
     bool lubrication_uses_reduced_viscosity = false; ///< C-17
 
+    // [double_layer] electrostatic double-layer repulsion (DLVO; off, as in the paper)
+    bool double_layer = false;
+    double double_layer_potential = -0.025;       ///< surface potential ψ₀ [V]
+    double double_layer_debye_length = 100e-9;    ///< λ_D [m]
+    double double_layer_permittivity = 32.2;      ///< ε_r of the liquid (NMP)
+    double double_layer_cutoff = 0.0;             ///< h_cut [m]; 0 = the pair's r_L, as van der Waals
+
     // [scaling] (M-7)
     double time_factor = 1e7;            ///< k
     double viscosity_reduction = 10;     ///< b

@@ -66,6 +66,13 @@ substrate = true
 kappa_c = 0.1
 uses_reduced_viscosity = false   # C-17
 
+[double_layer]                   # electrostatic double-layer repulsion (DLVO, docs/model.md); the
+enabled = false                  # paper leaves it out (van der Waals dominates); scaled like van der Waals
+surface_potential = "-25 mV"     # psi_0 of every particle (a zeta potential; measure it for your slurry)
+debye_length = "100 nm"          # lambda_D of the liquid (from its ionic strength; illustrative)
+relative_permittivity = 32.2     # NMP at 25 degC
+cutoff = 0                       # 0 = each pair's lubrication range r_L, as van der Waals
+
 [scaling]                        # the paper's time-scaling scheme (Sec. 4.1, model.md M-7)
 time_factor = 1e7                # k
 viscosity_reduction = 10         # b (Stokes drag viscosity / b)

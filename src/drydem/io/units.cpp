@@ -17,10 +17,10 @@ namespace drydem {
 
 namespace {
 
-// Exponents of the base quantities: metre, kilogram, second, kelvin, radian. The radian is kept as
-// a base so that angles and plain numbers cannot be confused.
-using Dims = std::array<int, 5>;
-constexpr Dims kNone{0, 0, 0, 0, 0};
+// Exponents of the base quantities: metre, kilogram, second, kelvin, radian, ampere. The radian is
+// kept as a base so that angles and plain numbers cannot be confused.
+using Dims = std::array<int, 6>;
+constexpr Dims kNone{0, 0, 0, 0, 0, 0};
 
 // A unit's SI factor is kept as num/den * 10^pow10 rather than one double: the decimal part is
 // applied by shifting the exponent of the number *text* ("6.5 um" → "6.5e-6"), so results equal
@@ -62,6 +62,7 @@ const std::array kSymbols{
     Symbol{"J", {1, 1, 0, ENERGY}, true},
     Symbol{"eV", {1.602176634, 1, -19, ENERGY}, false},
     Symbol{"W", {1, 1, 0, {2, 1, -3, 0, 0}}, true},
+    Symbol{"V", {1, 1, 0, {2, 1, -3, 0, 0, -1}}, true},
     Symbol{"L", {1, 1, -3, {3, 0, 0, 0, 0}}, true},
     Symbol{"%", {1, 1, -2, kNone}, false},
 };
@@ -74,7 +75,7 @@ const std::array kPrefixes{Prefix{"f", -15}, Prefix{"p", -12}, Prefix{"n", -9}, 
                            Prefix{"µ", -6},  Prefix{"μ", -6},   Prefix{"m", -3}, Prefix{"c", -2},
                            Prefix{"k", 3},   Prefix{"M", 6},    Prefix{"G", 9},  Prefix{"T", 12}};
 
-constexpr std::array<Dims, 18> kExpected{{
+constexpr std::array<Dims, 19> kExpected{{
     kNone,                // dimensionless
     L,                    // length
     T,                    // time
@@ -93,19 +94,20 @@ constexpr std::array<Dims, 18> kExpected{{
     {0, 0, -1, 0, 0},     // frequency
     {0, 1, -3, -1, 0},    // heat transfer coefficient
     {2, 0, -2, -1, 0},    // specific heat
+    {2, 1, -3, 0, 0, -1}, // electric potential
 }};
-constexpr std::array<std::string_view, 18> kNames{
+constexpr std::array<std::string_view, 19> kNames{
     "dimensionless",  "length",          "time",          "mass",
     "velocity",       "acceleration",    "density",       "pressure",
     "viscosity",      "surface tension", "energy",        "force",
     "areal density",  "temperature",     "angle",         "frequency",
-    "heat transfer coefficient",         "specific heat capacity"};
+    "heat transfer coefficient",         "specific heat capacity", "electric potential"};
 // Unit used in the "e.g." part of error messages, with its decimal exponent (0 = SI already).
 struct Example {
     std::string_view unit;
     int pow10;
 };
-constexpr std::array<Example, 18> kExamples{{{"", 0},
+constexpr std::array<Example, 19> kExamples{{{"", 0},
                                              {"um", -6},
                                              {"s", 0},
                                              {"mg", -6},
@@ -122,7 +124,8 @@ constexpr std::array<Example, 18> kExamples{{{"", 0},
                                              {"deg", 0},
                                              {"Hz", 0},
                                              {"W/(m^2*K)", 0},
-                                             {"J/(kg*K)", 0}}};
+                                             {"J/(kg*K)", 0},
+                                             {"mV", -3}}};
 
 std::size_t index(Dimension d) { return static_cast<std::size_t>(d); }
 
@@ -483,6 +486,7 @@ std::string format_quantity(double si, Dimension d) {
     static const Choice tension[]{{"mN/m", 1e-3}, {"N/m", 1}};
     static const Choice force[]{{"pN", 1e-12}, {"nN", 1e-9}, {"uN", 1e-6}, {"mN", 1e-3}, {"N", 1}};
     static const Choice frequency[]{{"Hz", 1}, {"kHz", 1e3}, {"MHz", 1e6}, {"GHz", 1e9}};
+    static const Choice potential[]{{"mV", 1e-3}, {"V", 1}};
     Choice c{"", 1};
     switch (d) {
     case D::dimensionless: return fmt::format("{:.6g}", si);
@@ -503,6 +507,7 @@ std::string format_quantity(double si, Dimension d) {
     case D::frequency: c = pick(si, frequency); break;
     case D::heat_transfer_coefficient: c = {"W/(m^2*K)", 1}; break;
     case D::specific_heat: c = {"J/(kg*K)", 1}; break;
+    case D::electric_potential: c = pick(si, potential); break;
     }
     return fmt::format("{:.6g} {}", si / c.scale, c.unit);
 }

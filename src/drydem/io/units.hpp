@@ -32,6 +32,7 @@ enum class Dimension {
     frequency,
     heat_transfer_coefficient, ///< W/(m^2 K), dryer zones
     specific_heat,             ///< J/(kg K), dryer model
+    electric_potential,        ///< V, double-layer repulsion
 };
 
 /// Human name, e.g. "areal density".

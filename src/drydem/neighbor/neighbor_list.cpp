@@ -49,7 +49,7 @@ void NeighborList::sort_by_cell(ParticleStore& p) {
     p.permute(order);
 }
 
-void NeighborList::carry_history(const ParticleStore& p) {
+void NeighborList::carry_states(const ParticleStore& p) {
     if (old_offset_.empty()) return;
     const std::size_t n = p.size();
 #pragma omp parallel for schedule(dynamic, 512) num_threads(threads_)
@@ -58,24 +58,24 @@ void NeighborList::carry_history(const ParticleStore& p) {
         if (orow == UINT32_MAX) continue;
         const std::uint32_t ob = old_offset_[orow], oe = old_offset_[orow + 1];
         bool any = false;
-        for (std::uint32_t s = ob; s < oe && !any; ++s) any = norm2(old_history_[s]) > 0.0;
+        for (std::uint32_t s = ob; s < oe && !any; ++s) any = PairLaws::keeps(old_state_[s]);
         if (!any) continue;
         for (std::uint32_t s = offset_[i]; s < offset_[i + 1]; ++s) {
             const std::uint32_t pid = p.id[partner_[s]];
             for (std::uint32_t o = ob; o < oe; ++o)
                 if (old_partner_id_[o] == pid) {
-                    history_[s] = old_history_[o];
+                    state_[s] = old_state_[o];
                     break;
                 }
         }
     }
 }
 
-std::vector<NeighborList::Entry> NeighborList::history_entries(const ParticleStore& p) const {
+std::vector<NeighborList::Entry> NeighborList::state_entries(const ParticleStore& p) const {
     std::vector<Entry> out;
     for (std::size_t i = 0; i + 1 < offset_.size(); ++i)
         for (std::uint32_t s = offset_[i]; s < offset_[i + 1]; ++s)
-            if (norm2(history_[s]) > 0.0) out.push_back({p.id[i], p.id[partner_[s]], history_[s]});
+            if (PairLaws::keeps(state_[s])) out.push_back({p.id[i], p.id[partner_[s]], state_[s]});
     return out;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Half Verlet list (CSR) with skin, built on a cell grid, with per-pair cut-offs and contact
-// history that survives rebuilds, re-sorting and periodic wrapping (model.md M-2.5, M-9.4).
+// Half Verlet list (CSR) with skin, built on a cell grid, with per-pair cut-offs and the pair
+// laws' per-pair state (PairState: the contact's tangential spring, and whatever a law keeps; see
+// forces/pair_law.hpp) that survives rebuilds, re-sorting and periodic wrapping (model.md M-2.5,
+// M-9.4).
 //
 // Size-aware search for a 1:8 size ratio: every pair is owned by its larger particle (ordering key
 // (radius, id)), so a particle only searches for partners no larger than itself. The grid is sized
@@ -10,6 +12,7 @@
 #include "drydem/core/box.hpp"
 #include "drydem/core/particles.hpp"
 #include "drydem/core/vec3.hpp"
+#include "drydem/forces/force_field.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -33,13 +36,13 @@ public:
     [[nodiscard]] std::uint32_t partner(std::uint32_t slot) const { return partner_[slot]; }
     /// Squared interaction reach (r_i + r_j + range)² of the pair in this slot, without skin.
     [[nodiscard]] double reach2(std::uint32_t slot) const { return reach2_[slot]; }
-    /// Tangential spring of the contact in this slot (zero when not in contact).
-    [[nodiscard]] Vec3& history(std::uint32_t slot) { return history_[slot]; }
-    [[nodiscard]] const Vec3& history(std::uint32_t slot) const { return history_[slot]; }
+    /// What the pair laws keep for the pair in this slot (PairState{} when nothing).
+    [[nodiscard]] PairState& state(std::uint32_t slot) { return state_[slot]; }
+    [[nodiscard]] const PairState& state(std::uint32_t slot) const { return state_[slot]; }
     [[nodiscard]] std::uint64_t builds() const { return builds_; }
 
     /// True when the pair (i, j) is owned by i: i is larger, ties broken by id (stable under
-    /// re-sorting, so a pair's history always lives in the same owner's row).
+    /// re-sorting, so a pair's state always lives in the same owner's row).
     static bool owns(double r_i, std::uint32_t id_i, double r_j, std::uint32_t id_j) {
         return r_j < r_i || (r_j == r_i && id_j < id_i);
     }
@@ -52,37 +55,37 @@ public:
 
     /// Rebuilds the list. `range(i, j)` returns the pair's interaction range beyond contact [m];
     /// `owner_range(i)` an upper bound of range(i, j) over every j that i can own. When `sort` is
-    /// set, particles are first reordered by cell for memory locality. Histories are carried over
-    /// by particle id.
+    /// set, particles are first reordered by cell for memory locality. Pair states are carried
+    /// over by particle id.
     template <class RangeFn, class OwnerRangeFn>
     void build(ParticleStore& p, const Box& box, RangeFn&& range, OwnerRangeFn&& owner_range,
                bool sort);
 
-    /// Histories keyed by (owner id, partner id), for checkpoints and tests.
+    /// Kept pair states keyed by (owner id, partner id), for tests.
     struct Entry {
         std::uint32_t owner_id, partner_id;
-        Vec3 history;
+        PairState state;
     };
-    [[nodiscard]] std::vector<Entry> history_entries(const ParticleStore& p) const;
+    [[nodiscard]] std::vector<Entry> state_entries(const ParticleStore& p) const;
 
     /// Everything the next steps depend on (checkpoints): the list itself in its slot order, the
-    /// histories and the positions of the last build (which decide the next rebuild). The cell
+    /// pair states and the positions of the last build (which decide the next rebuild). The cell
     /// grid and the carry-over arrays are rebuilt from scratch at every build, so they are not
     /// state.
     struct State {
         std::uint64_t builds = 0;
         std::vector<std::uint32_t> offset, partner;
         std::vector<double> reach2;
-        std::vector<Vec3> history;
+        std::vector<PairState> pair_state;
         std::vector<Vec3> x_build;
     };
-    [[nodiscard]] State state() const { return {builds_, offset_, partner_, reach2_, history_, x_build_}; }
+    [[nodiscard]] State state() const { return {builds_, offset_, partner_, reach2_, state_, x_build_}; }
     void restore(State s) {
         builds_ = s.builds;
         offset_ = std::move(s.offset);
         partner_ = std::move(s.partner);
         reach2_ = std::move(s.reach2);
-        history_ = std::move(s.history);
+        state_ = std::move(s.pair_state);
         x_build_ = std::move(s.x_build);
     }
 
@@ -95,7 +98,7 @@ private:
     };
     void bin(const ParticleStore& p, const Box& box, double cell_size);
     void sort_by_cell(ParticleStore& p);
-    void carry_history(const ParticleStore& p);
+    void carry_states(const ParticleStore& p);
 
     double skin_;
     int threads_; ///< OpenMP threads of the build (the engine's)
@@ -103,11 +106,11 @@ private:
     Grid grid_;
     std::vector<std::uint32_t> offset_, partner_;
     std::vector<double> reach2_;
-    std::vector<Vec3> history_;
+    std::vector<PairState> state_;
     std::vector<Vec3> x_build_;
-    // Previous list, keyed by ids, for carrying histories over.
+    // Previous list, keyed by ids, for carrying pair states over.
     std::vector<std::uint32_t> old_offset_, old_partner_id_, old_row_of_id_;
-    std::vector<Vec3> old_history_;
+    std::vector<PairState> old_state_;
     std::vector<std::uint32_t> order_;
 };
 
@@ -115,9 +118,9 @@ template <class RangeFn, class OwnerRangeFn>
 void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
                          OwnerRangeFn&& owner_range, bool sort) {
     const std::size_t n = p.size();
-    // Keep the previous list, keyed by ids, to carry contact histories over.
+    // Keep the previous list, keyed by ids, to carry pair states over.
     old_offset_.swap(offset_);
-    old_history_.swap(history_);
+    old_state_.swap(state_);
     old_partner_id_.resize(partner_.size());
     for (std::size_t s = 0; s < partner_.size(); ++s) old_partner_id_[s] = p.id[partner_[s]];
     std::uint32_t max_id = 0;
@@ -181,7 +184,7 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
     for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
     partner_.resize(offset_[n]);
     reach2_.resize(offset_[n]);
-    history_.assign(offset_[n], Vec3{});
+    state_.assign(offset_[n], PairState{});
 #pragma omp parallel for schedule(dynamic, 256) num_threads(threads_)
     for (std::size_t i = 0; i < n; ++i) {
         std::uint32_t s = offset_[i];
@@ -190,7 +193,7 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
             partner_[s++] = j;
         });
     }
-    carry_history(p);
+    carry_states(p);
     x_build_ = p.position;
     ++builds_;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/output/checkpoint.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/forces/force_field.hpp"
 #include "drydem/io/particle_io.hpp"
 #include <fmt/format.h>
 #include <fstream>
@@ -11,8 +12,9 @@ namespace {
 
 constexpr char kMagic[8] = {'D', 'R', 'Y', 'D', 'E', 'M', 'C', 'K'};
 // Format 3: the drying run's progress is a versioned list of named fields (drying/run_state.hpp),
-// no longer the raw bytes of a struct.
-constexpr std::uint32_t kFormatVersion = 3;
+// no longer the raw bytes of a struct. Format 4: the neighbour list holds the pair laws' state
+// (PairState), preceded by the list's layout (law names and state sizes).
+constexpr std::uint32_t kFormatVersion = 4;
 
 std::uint64_t fnv1a(const unsigned char* data, std::size_t n) {
     std::uint64_t h = 14695981039346656037ull;
@@ -36,7 +38,7 @@ void each_field(State& s, F&& field) {
     field(p.inv_mass), field(p.inv_inertia), field(p.position), field(p.velocity), field(p.omega);
     field(p.force), field(p.torque), field(p.wall_history);
     auto& nl = s.neighbors;
-    field(nl.builds), field(nl.offset), field(nl.partner), field(nl.reach2), field(nl.history);
+    field(nl.builds), field(nl.offset), field(nl.partner), field(nl.reach2), field(nl.pair_state);
     field(nl.x_build);
     field(s.step), field(s.time), field(s.liquid_level), field(s.dt);
     field(s.stats.contacts), field(s.stats.wall_contacts), field(s.stats.max_overlap_rel);
@@ -48,6 +50,8 @@ template <class T> struct is_vector<std::vector<T>> : std::true_type {};
 } // namespace
 
 void write_engine_state(BinaryWriter& w, const EngineState& s) {
+    const std::string_view layout = PairLaws::layout();
+    w.vec(std::vector<char>(layout.begin(), layout.end()));
     each_field(s, [&](const auto& v) {
         if constexpr (is_vector<std::remove_cvref_t<decltype(v)>>::value) w.vec(v);
         else w.pod(v);
@@ -55,6 +59,11 @@ void write_engine_state(BinaryWriter& w, const EngineState& s) {
 }
 
 EngineState read_engine_state(BinaryReader& r) {
+    const std::vector<char> layout = r.vec<char>();
+    if (std::string_view(layout.data(), layout.size()) != PairLaws::layout())
+        throw InputError(fmt::format("checkpoint: written with the pair laws '{}', this build has '{}'; "
+                                     "it cannot be continued by this build",
+                                     std::string(layout.begin(), layout.end()), PairLaws::layout()));
     EngineState s;
     each_field(s, [&](auto& v) {
         using T = std::remove_cvref_t<decltype(v)>;
@@ -74,7 +83,7 @@ EngineState read_engine_state(BinaryReader& r) {
         nl.offset.empty() ? nl.partner.empty()
                           : nl.offset.size() == n + 1 && nl.offset.back() == nl.partner.size() &&
                                 nl.reach2.size() == nl.partner.size() &&
-                                nl.history.size() == nl.partner.size() && nl.x_build.size() == n;
+                                nl.pair_state.size() == nl.partner.size() && nl.x_build.size() == n;
     if (!list_ok) throw InputError("checkpoint: the neighbor list does not fit the particles");
     for (std::uint32_t j : nl.partner)
         if (j >= n) throw InputError("checkpoint: neighbor index out of range");

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+// The contract of a pair law, and the composition of a compile-time list of laws (issue 12,
+// ARCHITECTURE.md "Adding a pair law"). The pair loop, the stability guard, `drydem check`, the
+// neighbour list and the checkpoint reach every law only through PairLawList below: no virtual
+// call, and a law nobody switched on costs one early return.
+//
+// A pair law is a struct L with
+//   Params                  its parameters for one species pair, as simulated (scaled SI units)
+//   State                   what it keeps per pair from step to step (trivially copyable, a value
+//                           State{} means "nothing kept"); an empty struct when it keeps nothing
+//   name                    a short name (checkpoint layout, messages)
+//   range(p, r_i, r_j)      the largest surface gap h at which it acts [m]; 0 when it is off
+//   force(g, p, s, dt, R)   its force and torques for the geometry g (pair_geometry.hpp); it
+//                           advances its state s by dt, and when R is given adds the resistance of
+//                           its dissipative part (resistance.hpp pair form) to *R
+//   resistance(g, p)        the resistance of its dissipative part at g (zero if conservative):
+//                           the linear map velocities -> forces the force applies
+//   stiffness(closest, now, p)  |dF/dx| of its conservative part for the stability guard, in the
+//                           pair form (normal, sliding); `closest` is the pair brought together by
+//                           the neighbour skin (the worst case before the next rebuild), `now` the
+//                           present pair: the law picks the one that bounds its rate
+//   keeps(s)                whether s holds something (carried over list rebuilds, checkpointed)
+//   from_config(c, a, b)    its parameters for the species a and b from the configuration
+// Every law of the list sees the same PairGeometry, computed once per pair. A law's state lives
+// in the neighbour list beside the pair; it survives rebuilds, re-sorts and periodic wraps while
+// the pair stays within reach (the largest range of the list plus the skin) and is cleared once
+// the pair has left it, so a law whose state must outlive a gap includes that gap in its range.
+#pragma once
+#include "drydem/forces/pair_geometry.hpp"
+#include "drydem/forces/resistance.hpp"
+#include <algorithm>
+#include <concepts>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+namespace drydem {
+
+template <class L>
+concept PairLaw = requires(const typename L::Params& p, typename L::State& s,
+                           const typename L::State& cs, const PairGeometry& g, double r, double dt,
+                           PairResistance* res) {
+    { L::name } -> std::convertible_to<std::string_view>;
+    { L::range(p, r, r) } -> std::same_as<double>;
+    { L::force(g, p, s, dt, res) } -> std::same_as<PairForce>;
+    { L::resistance(g, p) } -> std::same_as<PairResistance>;
+    { L::stiffness(g, g, p) } -> std::same_as<PairResistance>;
+    { L::keeps(cs) } -> std::same_as<bool>;
+    requires std::is_trivially_copyable_v<typename L::State>;
+    requires std::is_default_constructible_v<typename L::Params>;
+};
+
+/// The per-pair states of a list of laws, one after the other; a law that keeps nothing takes no
+/// space ([[no_unique_address]] on its empty State).
+template <class... Ls>
+struct LawStates {};
+template <class L, class... Rest>
+struct LawStates<L, Rest...> {
+    [[no_unique_address]] typename L::State first{};
+    [[no_unique_address]] LawStates<Rest...> rest{};
+};
+
+/// A compile-time list of pair laws, summed in list order.
+template <PairLaw... Ls>
+struct PairLawList {
+    using Params = std::tuple<typename Ls::Params...>; ///< one species pair's parameters
+    using State = LawStates<Ls...>;                    ///< one pair's kept state
+
+    /// The parameters (or state) of law L.
+    template <class L>
+    static constexpr std::size_t index_of = [] {
+        constexpr bool same[] = {std::is_same_v<L, Ls>...};
+        std::size_t k = 0;
+        while (!same[k]) ++k;
+        return k;
+    }();
+    template <class L>
+    static auto& params(Params& p) { return std::get<index_of<L>>(p); }
+    template <class L>
+    static const auto& params(const Params& p) { return std::get<index_of<L>>(p); }
+    template <class L>
+    static auto& state(State& s) { return state_at<index_of<L>>(s); }
+
+    /// Every law's parameters from the configuration (each law's `from_config`, beside the law).
+    template <class... Args>
+    static Params from_config(const Args&... args) { return Params{Ls::from_config(args...)...}; }
+
+    /// Interaction range of the pair beyond contact [m]: the largest of the laws' ranges.
+    static double range(const Params& p, double r_i, double r_j) {
+        return each([&]<std::size_t... K>(std::index_sequence<K...>) {
+            double h = 0.0;
+            ((h = std::max(h, at<K>::range(std::get<K>(p), r_i, r_j))), ...);
+            return h;
+        });
+    }
+
+    /// Force and torques of all laws, in list order. With `resistance`, it receives the sum of the
+    /// dissipative parts, with the lever arms r + h/2 that every dissipative pair law shares
+    /// (centres to the mid-plane of the gap; r - δ/2 in overlap).
+    static PairForce force(const PairGeometry& g, const Params& p, State& s, double dt,
+                           PairResistance* resistance = nullptr) {
+        PairForce f{};
+        each([&]<std::size_t... K>(std::index_sequence<K...>) {
+            ((f += at<K>::force(g, std::get<K>(p), state_at<K>(s), dt, resistance)), ...);
+        });
+        if (resistance) set_levers(*resistance, g);
+        return f;
+    }
+
+    /// Resistance of the dissipative parts at g (stability guard, `drydem check`).
+    static PairResistance resistance(const PairGeometry& g, const Params& p) {
+        PairResistance r;
+        each([&]<std::size_t... K>(std::index_sequence<K...>) {
+            ((r += at<K>::resistance(g, std::get<K>(p))), ...);
+        });
+        set_levers(r, g);
+        return r;
+    }
+
+    /// Stiffness of the conservative parts (stability guard), levers at `closest`.
+    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry& now,
+                                    const Params& p) {
+        PairResistance k;
+        each([&]<std::size_t... K>(std::index_sequence<K...>) {
+            ((k += at<K>::stiffness(closest, now, std::get<K>(p))), ...);
+        });
+        set_levers(k, closest);
+        return k;
+    }
+
+    /// Whether any law keeps something for this pair.
+    static bool keeps(const State& s) {
+        return each([&]<std::size_t... K>(std::index_sequence<K...>) {
+            return (at<K>::keeps(state_at<K>(s)) || ...);
+        });
+    }
+
+    /// The laws' names and state sizes: a checkpoint written with another list is refused.
+    static std::string_view layout() {
+        static const std::string text = [] {
+            std::string t;
+            ((t += std::string(Ls::name) + ":" + std::to_string(sizeof(typename Ls::State)) + ";"), ...);
+            return t;
+        }();
+        return text;
+    }
+
+private:
+    template <std::size_t K>
+    using at = std::tuple_element_t<K, std::tuple<Ls...>>;
+
+    template <class F>
+    static decltype(auto) each(F&& f) { return f(std::index_sequence_for<Ls...>{}); }
+
+    template <std::size_t K, class S>
+    static auto& state_at(S& s) {
+        if constexpr (K == 0) return s.first;
+        else return state_at<K - 1>(s.rest);
+    }
+
+    static void set_levers(PairResistance& r, const PairGeometry& g) {
+        r.lever_i = g.r_i + 0.5 * g.gap;
+        r.lever_j = g.r_j + 0.5 * g.gap;
+    }
+};
+
+} // namespace drydem
