@@ -53,86 +53,48 @@ void set_transport_options(AnalysisOptions& o, const Config& c) {
     o.binder.diffusivity = c.analysis_binder_diffusivity;
 }
 
-AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
-    auto say = [&](const std::string& m) {
-        if (o.log) o.log(m);
-    };
-    if (!(o.profile_dz > 0.0)) throw InputError(fmt::format("profile slab width {} m: must be positive", o.profile_dz));
-    if (o.pore_top != "half_solid" && o.pore_top != "highest")
-        throw InputError(fmt::format("pore top '{}': allowed are 'half_solid' and 'highest'", o.pore_top));
-    AnalysisResult r;
-    const double top = highest_top(s);
-    r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
-    r.bulk = bulk_properties(s, r.profiles.solid(), o.profile_dz);
-    r.coordination = coordination(s, o.contact_gap);
-    r.base_area = s.box.area();
-    r.surfaces = ncm_surfaces(s, o.surfaces);
-    // Transport on its own (coarser) voxelizations of the coating below the pore top.
-    if (!o.transport.voxels.empty()) {
-        TransportOptions to = o.transport;
-        to.log = o.log;
-        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
-        r.transport = film_transport(s, coating_top, to);
-    }
-    if (!o.timeseries.empty()) {
-        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
-        const DryingHistory h = read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
-        BinderParams bp = o.binder;
-        if (r.transport) {
-            const TransportLevel& L = r.transport->reported();
-            const double alpha = bruggeman_exponent(L.porosity, L.tau_z);
-            if (alpha >= 1.0 && alpha <= 5.0) bp.bruggeman = alpha;
-        }
-        r.binder = binder_migration(h, bp);
-        say(fmt::format("binder migration: Pe {:.3g}, binder at the substrate (bottom 10 %) {:.3f}, top 10 % {:.3f} "
-                        "of the mean, {} steps",
-                        r.binder->peclet, r.binder->bottom10, r.binder->top10, r.binder->steps));
-        // The same film dried f times faster: the time axis of the history divided by f.
-        for (double f : o.binder_rate_factors) {
-            DryingHistory hf = h;
-            for (double& t : hf.time) t = h.time.front() + (t - h.time.front()) / f;
-            r.binder_rates.emplace_back(f, binder_migration(hf, bp));
-        }
-    }
-    if (!(o.voxel > 0.0)) return r;
+namespace {
 
-    // Refuse what this machine cannot hold instead of dying in the allocation.
-    {
-        const double voxels = double(voxel_count(s, o.voxel, top));
-        const double need = voxel_analysis_bytes * voxels;
-        const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
-        if (voxels >= 4.0e9 || (have > 0.0 && need > 0.8 * have))
-            throw InputError(fmt::format(
-                "voxel size {:.3g} um: the voxel image has {:.3g} voxels and needs about {:.1f} GB, more than this "
-                "machine's {:.1f} GB allow (and at most 4e9 voxels); choose a coarser voxel size (analysis.voxel_size "
-                "or --voxel, e.g. {:.2g} um)",
-                o.voxel * 1e6, voxels, need / 1e9, have / 1e9, o.voxel * 1e6 * std::cbrt(need / (0.5 * have)) + 1e-3));
+/// Binder migration (paper Eq. 1) over the run's drying history, and the same film dried faster.
+template <class Say>
+void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_top, Say&& say) {
+    const DryingHistory h = read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
+    BinderParams bp = o.binder;
+    if (r.transport) {
+        const TransportLevel& L = r.transport->reported();
+        const double alpha = bruggeman_exponent(L.porosity, L.tau_z);
+        if (alpha >= 1.0 && alpha <= 5.0) bp.bruggeman = alpha;
     }
-    auto t = std::chrono::steady_clock::now();
-    r.voxelized = true;
-    VoxelGrid g = voxelize(s, o.voxel, top);
-    r.nx = g.nx;
-    r.ny = g.ny;
-    r.nz = g.nz;
-    r.voxel = g.az;
-    r.seconds.push_back(since(t));
-    say(fmt::format("voxel image {} x {} x {} ({:.3g} voxels, {:.3g} um) in {:.1f} s", g.nx, g.ny, g.nz,
-                    double(g.size()), g.az * 1e6, r.seconds.back()));
-    r.pore_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
-    r.pore_top_layer = std::clamp(int(std::lround(r.pore_top / g.az)), 1, g.nz);
-    {
-        std::uint64_t counts[3] = {0, 0, 0};
-        const std::size_t n = std::size_t(r.pore_top_layer) * std::size_t(g.nx) * std::size_t(g.ny);
-        for (std::size_t i = 0; i < n; ++i) ++counts[std::min<std::uint8_t>(g.label[i], 2)];
-        r.voxel_porosity = double(counts[0]) / double(n);
-        r.voxel_ncm_fraction = double(counts[1]) / double(n);
-        r.voxel_cb_fraction = double(counts[2]) / double(n);
-        r.porosity_with_cb_pores = r.voxel_porosity + s.formulation.cb_porosity * r.voxel_cb_fraction;
+    r.binder = binder_migration(h, bp);
+    say(fmt::format("binder migration: Pe {:.3g}, binder at the substrate (bottom 10 %) {:.3f}, top 10 % {:.3f} "
+                    "of the mean, {} steps",
+                    r.binder->peclet, r.binder->bottom10, r.binder->top10, r.binder->steps));
+    // The same film dried f times faster: the time axis of the history divided by f.
+    for (double f : o.binder_rate_factors) {
+        DryingHistory hf = h;
+        for (double& t : hf.time) t = h.time.front() + (t - h.time.front()) / f;
+        r.binder_rates.emplace_back(f, binder_migration(hf, bp));
     }
-    r.chords = chord_lengths(g, r.pore_top_layer);
-    r.seconds.push_back(since(t));
-    say(fmt::format("chord lengths in {:.1f} s", r.seconds.back()));
+}
 
+/// Refuse what this machine cannot hold instead of dying in the allocation.
+void check_voxel_memory(const Structure& s, const AnalysisOptions& o, double top) {
+    const double voxels = double(voxel_count(s, o.voxel, top));
+    const double need = voxel_analysis_bytes * voxels;
+    const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    if (voxels >= 4.0e9 || (have > 0.0 && need > 0.8 * have))
+        throw InputError(fmt::format(
+            "voxel size {:.3g} um: the voxel image has {:.3g} voxels and needs about {:.1f} GB, more than this "
+            "machine's {:.1f} GB allow (and at most 4e9 voxels); choose a coarser voxel size (analysis.voxel_size "
+            "or --voxel, e.g. {:.2g} um)",
+            o.voxel * 1e6, voxels, need / 1e9, have / 1e9, o.voxel * 1e6 * std::cbrt(need / (0.5 * have)) + 1e-3));
+}
+
+/// Pore sizes of the coating below the pore top: local thickness and simulated mercury intrusion,
+/// with their medians and the peak.
+template <class Say>
+void pore_sizes(AnalysisResult& r, VoxelGrid& g, const AnalysisOptions& o, std::chrono::steady_clock::time_point t,
+                Say&& say) {
     // The pore sizes of the coating: the layers below the pore top, open at that plane (where the
     // mercury enters). The rough surface above is no pore space of the coating.
     VoxelGrid owned;
@@ -194,6 +156,64 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     };
     r.psd.median = median_of(r.psd.volume);
     r.psd.mip_median = median_of(r.psd.intruded);
+}
+
+} // namespace
+
+AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
+    auto say = [&](const std::string& m) {
+        if (o.log) o.log(m);
+    };
+    if (!(o.profile_dz > 0.0)) throw InputError(fmt::format("profile slab width {} m: must be positive", o.profile_dz));
+    if (o.pore_top != "half_solid" && o.pore_top != "highest")
+        throw InputError(fmt::format("pore top '{}': allowed are 'half_solid' and 'highest'", o.pore_top));
+    AnalysisResult r;
+    const double top = highest_top(s);
+    r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
+    r.bulk = bulk_properties(s, r.profiles.solid(), o.profile_dz);
+    r.coordination = coordination(s, o.contact_gap);
+    r.base_area = s.box.area();
+    r.surfaces = ncm_surfaces(s, o.surfaces);
+    // Transport on its own (coarser) voxelizations of the coating below the pore top.
+    if (!o.transport.voxels.empty()) {
+        TransportOptions to = o.transport;
+        to.log = o.log;
+        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
+        r.transport = film_transport(s, coating_top, to);
+    }
+    if (!o.timeseries.empty()) {
+        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
+        analyze_binder(r, o, coating_top, say);
+    }
+    if (!(o.voxel > 0.0)) return r;
+
+    check_voxel_memory(s, o, top);
+    auto t = std::chrono::steady_clock::now();
+    r.voxelized = true;
+    VoxelGrid g = voxelize(s, o.voxel, top);
+    r.nx = g.nx;
+    r.ny = g.ny;
+    r.nz = g.nz;
+    r.voxel = g.az;
+    r.seconds.push_back(since(t));
+    say(fmt::format("voxel image {} x {} x {} ({:.3g} voxels, {:.3g} um) in {:.1f} s", g.nx, g.ny, g.nz,
+                    double(g.size()), g.az * 1e6, r.seconds.back()));
+    r.pore_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
+    r.pore_top_layer = std::clamp(int(std::lround(r.pore_top / g.az)), 1, g.nz);
+    {
+        std::uint64_t counts[3] = {0, 0, 0};
+        const std::size_t n = std::size_t(r.pore_top_layer) * std::size_t(g.nx) * std::size_t(g.ny);
+        for (std::size_t i = 0; i < n; ++i) ++counts[std::min<std::uint8_t>(g.label[i], 2)];
+        r.voxel_porosity = double(counts[0]) / double(n);
+        r.voxel_ncm_fraction = double(counts[1]) / double(n);
+        r.voxel_cb_fraction = double(counts[2]) / double(n);
+        r.porosity_with_cb_pores = r.voxel_porosity + s.formulation.cb_porosity * r.voxel_cb_fraction;
+    }
+    r.chords = chord_lengths(g, r.pore_top_layer);
+    r.seconds.push_back(since(t));
+    say(fmt::format("chord lengths in {:.1f} s", r.seconds.back()));
+
+    pore_sizes(r, g, o, t, say);
     if (o.keep_grid) r.grid = std::move(g);
     return r;
 }

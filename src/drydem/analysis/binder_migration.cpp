@@ -28,16 +28,11 @@ struct Level {
 
 } // namespace
 
-BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
-    if (h.time.size() < 2 || h.time.size() != h.liquid_level.size())
-        throw InputError("binder migration: the history needs at least two (time, liquid level) rows");
-    if (!(h.final_height > 0.0) || !(h.dz > 0.0) || h.porosity.empty())
-        throw InputError("binder migration: final height, slab width and porosity profile must be given");
-    if (!(p.diffusivity >= 0.0) || p.cells < 4 || !(p.residual_saturation > 0.0 && p.residual_saturation < 1.0))
-        throw InputError("binder migration: diffusivity >= 0, cells >= 4, residual saturation in (0, 1)");
-    const int n = p.cells;
+namespace {
+
+/// ε_f averaged over each of the n cells of the final film (slab profile, piecewise constant).
+std::vector<double> cell_porosity(const DryingHistory& h, int n) {
     const double Hf = h.final_height, dxi = 1.0 / n;
-    // ε_f averaged over each cell of the final film (slab profile, piecewise constant).
     std::vector<double> eps(std::size_t(n), 0.0);
     for (int i = 0; i < n; ++i) {
         const double a = i * dxi * Hf, b = (i + 1) * dxi * Hf;
@@ -50,6 +45,75 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
         eps[std::size_t(i)] = covered > 0 ? acc / covered : 1.0;
         eps[std::size_t(i)] = std::max(eps[std::size_t(i)], 1e-3);
     }
+    return eps;
+}
+
+/// Implicit diffusion of the dissolved binder over one step: solves, for the cell concentrations c,
+/// (θ₁ H₁ Δξ) c - Δt ∂/∂z (D₀ θ^α ∂c/∂z) = r (the convected amounts) with the Thomas algorithm.
+void diffuse(const std::vector<double>& th1, double H1, double dt, const BinderParams& p, std::vector<double>& lo,
+             std::vector<double>& di, std::vector<double>& up, std::vector<double>& r, std::vector<double>& c) {
+    const int n = p.cells;
+    const double dxi = 1.0 / n, alpha = p.bruggeman;
+    const double dz = H1 * dxi;
+    for (int i = 0; i < n; ++i) {
+        lo[std::size_t(i)] = up[std::size_t(i)] = 0.0;
+        di[std::size_t(i)] = th1[std::size_t(i)] * H1 * dxi;
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        const double tf = 0.5 * (th1[std::size_t(i)] + th1[std::size_t(i) + 1]);
+        const double k = dt * p.diffusivity * std::pow(tf, alpha) / dz;
+        di[std::size_t(i)] += k;
+        di[std::size_t(i) + 1] += k;
+        up[std::size_t(i)] = -k;
+        lo[std::size_t(i) + 1] = -k;
+    }
+    // Thomas algorithm.
+    for (int i = 1; i < n; ++i) {
+        const double w = lo[std::size_t(i)] / di[std::size_t(i) - 1];
+        di[std::size_t(i)] -= w * up[std::size_t(i) - 1];
+        r[std::size_t(i)] -= w * r[std::size_t(i) - 1];
+    }
+    c[std::size_t(n) - 1] = r[std::size_t(n) - 1] / di[std::size_t(n) - 1];
+    for (int i = n - 2; i >= 0; --i)
+        c[std::size_t(i)] = (r[std::size_t(i)] - up[std::size_t(i)] * c[std::size_t(i) + 1]) / di[std::size_t(i)];
+}
+
+/// The profile normalised by its mean, the bottom and top tenths, the evaporation rate and Pe.
+void summarize(BinderProfile& out, const std::vector<double>& m, double mass, double Hf, const DryingHistory& h,
+               double h_start, double late, const BinderParams& p) {
+    const int n = p.cells;
+    const double dxi = 1.0 / n;
+    out.z.resize(std::size_t(n));
+    out.binder.resize(std::size_t(n));
+    for (int i = 0; i < n; ++i) {
+        out.z[std::size_t(i)] = (i + 0.5) * dxi * Hf;
+        out.binder[std::size_t(i)] = m[std::size_t(i)] * n / mass;
+    }
+    const int tenth = std::max(1, int(std::lround(0.1 * n)));
+    for (int i = 0; i < tenth; ++i) {
+        out.bottom10 += out.binder[std::size_t(i)] / tenth;
+        out.top10 += out.binder[std::size_t(n - 1 - i)] / tenth;
+    }
+    if (out.consolidation_time > h.time.front() && h_start > Hf) {
+        out.evaporation_rate = (h_start - Hf) / (out.consolidation_time - h.time.front());
+        out.peclet = p.diffusivity > 0 ? out.evaporation_rate * h_start / p.diffusivity : INFINITY;
+    } else {
+        out.evaporation_rate = -late;
+        out.peclet = p.diffusivity > 0 ? -late * Hf / p.diffusivity : INFINITY;
+    }
+}
+} // namespace
+
+BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
+    if (h.time.size() < 2 || h.time.size() != h.liquid_level.size())
+        throw InputError("binder migration: the history needs at least two (time, liquid level) rows");
+    if (!(h.final_height > 0.0) || !(h.dz > 0.0) || h.porosity.empty())
+        throw InputError("binder migration: final height, slab width and porosity profile must be given");
+    if (!(p.diffusivity >= 0.0) || p.cells < 4 || !(p.residual_saturation > 0.0 && p.residual_saturation < 1.0))
+        throw InputError("binder migration: diffusivity >= 0, cells >= 4, residual saturation in (0, 1)");
+    const int n = p.cells;
+    const double Hf = h.final_height, dxi = 1.0 / n;
+    const std::vector<double> eps = cell_porosity(h, n);
     double pore_volume = 0.0; // ∫₀^H ε_f dz
     for (double e : eps) pore_volume += e * dxi * Hf;
 
@@ -89,7 +153,6 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
     double mass0 = 0.0;
     for (double v : m) mass0 += v;
     out.consolidation_time = h_start > Hf ? -1.0 : t;
-    const double alpha = p.bruggeman;
     int steps = 0;
     while (S0 > p.residual_saturation) {
         if (++steps > 50000000) throw InputError("binder migration: no end after 5e7 steps");
@@ -119,29 +182,7 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
             r[std::size_t(i) - 1] -= flux;
             r[std::size_t(i)] += flux;
         }
-        // Implicit diffusion: flux per area D₀ θ^α ∂c/∂z on the new grid.
-        const double dz = H1 * dxi;
-        for (int i = 0; i < n; ++i) {
-            lo[std::size_t(i)] = up[std::size_t(i)] = 0.0;
-            di[std::size_t(i)] = th1[std::size_t(i)] * H1 * dxi;
-        }
-        for (int i = 0; i + 1 < n; ++i) {
-            const double tf = 0.5 * (th1[std::size_t(i)] + th1[std::size_t(i) + 1]);
-            const double k = dt * p.diffusivity * std::pow(tf, alpha) / dz;
-            di[std::size_t(i)] += k;
-            di[std::size_t(i) + 1] += k;
-            up[std::size_t(i)] = -k;
-            lo[std::size_t(i) + 1] = -k;
-        }
-        // Thomas algorithm.
-        for (int i = 1; i < n; ++i) {
-            const double w = lo[std::size_t(i)] / di[std::size_t(i) - 1];
-            di[std::size_t(i)] -= w * up[std::size_t(i) - 1];
-            r[std::size_t(i)] -= w * r[std::size_t(i) - 1];
-        }
-        c[std::size_t(n) - 1] = r[std::size_t(n) - 1] / di[std::size_t(n) - 1];
-        for (int i = n - 2; i >= 0; --i)
-            c[std::size_t(i)] = (r[std::size_t(i)] - up[std::size_t(i)] * c[std::size_t(i) + 1]) / di[std::size_t(i)];
+        diffuse(th1, H1, dt, p, lo, di, up, r, c);
         for (int i = 0; i < n; ++i) m[std::size_t(i)] = c[std::size_t(i)] * th1[std::size_t(i)] * H1 * dxi;
         if (out.consolidation_time < 0.0 && H1 <= Hf) out.consolidation_time = t + dt;
         t += dt;
@@ -154,24 +195,7 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
     out.mass_balance = std::abs(mass - mass0) / mass0;
     out.end_time = t;
     out.steps = steps;
-    out.z.resize(std::size_t(n));
-    out.binder.resize(std::size_t(n));
-    for (int i = 0; i < n; ++i) {
-        out.z[std::size_t(i)] = (i + 0.5) * dxi * Hf;
-        out.binder[std::size_t(i)] = m[std::size_t(i)] * n / mass;
-    }
-    const int tenth = std::max(1, int(std::lround(0.1 * n)));
-    for (int i = 0; i < tenth; ++i) {
-        out.bottom10 += out.binder[std::size_t(i)] / tenth;
-        out.top10 += out.binder[std::size_t(n - 1 - i)] / tenth;
-    }
-    if (out.consolidation_time > h.time.front() && h_start > Hf) {
-        out.evaporation_rate = (h_start - Hf) / (out.consolidation_time - h.time.front());
-        out.peclet = p.diffusivity > 0 ? out.evaporation_rate * h_start / p.diffusivity : INFINITY;
-    } else {
-        out.evaporation_rate = -late;
-        out.peclet = p.diffusivity > 0 ? -late * Hf / p.diffusivity : INFINITY;
-    }
+    summarize(out, m, mass, Hf, h, h_start, late, p);
     return out;
 }
 

@@ -154,9 +154,74 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     times_.pair += omp_get_wtime() - t0;
 }
 
+namespace {
+// The partners' data lie in L2/L3: ask for the lines of the partners two and one slots ahead
+// (their geometry first, then what the pair writes) before they are needed.
+template <bool SelfBlocks>
+inline void prefetch_partners(const NeighborList& nl, const ParticleStore& p, const SelfBlock* block,
+                              std::uint32_t s, std::uint32_t row_end) {
+    if (s + 2 < row_end) {
+        const std::uint32_t jf = nl.partner(s + 2);
+        __builtin_prefetch(&p.position[jf]);
+        __builtin_prefetch(&p.radius[jf]);
+        __builtin_prefetch(&p.mass[jf]);
+    }
+    if (s + 1 < row_end) {
+        const std::uint32_t jn = nl.partner(s + 1);
+        __builtin_prefetch(&p.velocity[jn]);
+        __builtin_prefetch(&p.omega[jn]);
+        __builtin_prefetch(&p.force[jn], 1);
+        __builtin_prefetch(&p.torque[jn], 1);
+        if constexpr (SelfBlocks) { // 120 bytes: two cache lines
+            __builtin_prefetch(&block[jn], 1);
+            __builtin_prefetch(reinterpret_cast<const char*>(&block[jn]) + 64, 1);
+        }
+    }
+}
+} // namespace
+
+// The rows [lo, hi) of thread t hold an equal share of the list's slots (plus one per row), not
+// of the particles: pairs are owned by the larger particle and the film is denser at the bottom,
+// so equal particle counts left one thread waiting for the other at the barrier (18 % of the time
+// on the peers' bed with two threads).
+std::size_t Simulation::row_split(std::size_t t, std::size_t parts) const {
+    const std::size_t n = p_.size();
+    if (t >= parts) return n;
+    const std::uint32_t slots = n ? nl_.end(n - 1) : 0;
+    const double target = double(slots + n) * double(t) / double(parts);
+    std::size_t a = 0, b = n; // first row whose cumulative cost reaches the target
+    while (a < b) {
+        const std::size_t m = (a + b) / 2;
+        if (double(nl_.begin(m)) + double(m) < target) a = m + 1;
+        else b = m;
+    }
+    return a;
+}
+
+// Fixed-order reduction: every thread adds, for its own particles, what the other threads wrote
+// across, thread 0 first; it leaves those buffer entries zeroed.
+template <bool SelfBlocks>
+void Simulation::add_cross_range(std::size_t t, std::size_t lo, std::size_t hi) {
+    for (std::size_t k = 0; k < std::size_t(threads_); ++k) {
+        if (k == t) continue;
+        ThreadBuffer& other = buffer_[k];
+        for (const std::uint32_t j : other.touched) {
+            if (j - lo >= hi - lo) continue;
+            p_.force[j] += other.force[j];
+            p_.torque[j] += other.torque[j];
+            other.force[j] = Vec3{};
+            other.torque[j] = Vec3{};
+            if constexpr (SelfBlocks) {
+                block_[j] += other.block[j];
+                other.block[j] = SelfBlock{};
+            }
+            other.marked[j] = 0;
+        }
+    }
+}
+
 template <bool SelfBlocks>
 void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
-    const std::size_t n = p_.size();
     const double dt = settings_.dt;
     std::size_t contacts = 0;
     double max_overlap = max_overlap_out;
@@ -165,22 +230,6 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
     const PairParams* pair_table = ff_.pair.data();
     const std::size_t threads = std::size_t(threads_);
 
-    // The rows [lo, hi) of thread t hold an equal share of the list's slots (plus one per row),
-    // not of the particles: pairs are owned by the larger particle and the film is denser at the
-    // bottom, so equal particle counts left one thread waiting for the other at the barrier
-    // (18 % of the time on the peers' bed with two threads).
-    const std::uint32_t slots = n ? nl_.end(n - 1) : 0;
-    auto row_split = [&](std::size_t t, std::size_t parts) -> std::size_t {
-        if (t >= parts) return n;
-        const double target = double(slots + n) * double(t) / double(parts);
-        std::size_t a = 0, b = n; // first row whose cumulative cost reaches the target
-        while (a < b) {
-            const std::size_t m = (a + b) / 2;
-            if (double(nl_.begin(m)) + double(m) < target) a = m + 1;
-            else b = m;
-        }
-        return a;
-    };
 
     // Pair loop over the half list. Thread t owns the rows [lo, hi) and writes the forces,
     // torques and self-blocks of its own particles straight into the store (which holds the
@@ -217,24 +266,7 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
             const std::uint32_t row_end = nl_.end(i);
             for (std::uint32_t s = nl_.begin(i); s < row_end; ++s) {
                 const std::uint32_t j = nl_.partner(s);
-                // The partners' data lie in L2/L3: ask for the next partner's lines early.
-                if (s + 2 < row_end) {
-                    const std::uint32_t jf = nl_.partner(s + 2);
-                    __builtin_prefetch(&p.position[jf]);
-                    __builtin_prefetch(&p.radius[jf]);
-                    __builtin_prefetch(&p.mass[jf]);
-                }
-                if (s + 1 < row_end) {
-                    const std::uint32_t jn = nl_.partner(s + 1);
-                    __builtin_prefetch(&p.velocity[jn]);
-                    __builtin_prefetch(&p.omega[jn]);
-                    __builtin_prefetch(&force[jn], 1);
-                    __builtin_prefetch(&torque[jn], 1);
-                    if constexpr (SelfBlocks) { // 120 bytes: two cache lines
-                        __builtin_prefetch(&block[jn], 1);
-                        __builtin_prefetch(reinterpret_cast<const char*>(&block[jn]) + 64, 1);
-                    }
-                }
+                prefetch_partners<SelfBlocks>(nl_, p, block, s, row_end);
                 const Vec3 d = box_.minimum_image(xi, p.position[j]);
                 const double dist2 = norm2(d);
                 PairState& state = nl_.state(s);
@@ -276,24 +308,7 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
         }
         if (threads > 1) {
 #pragma omp barrier
-            // Fixed-order reduction: every thread adds, for its own particles, what the other
-            // threads wrote across, thread 0 first; it leaves those buffer entries zeroed.
-            for (std::size_t k = 0; k < threads; ++k) {
-                if (k == t) continue;
-                ThreadBuffer& other = buffer_[k];
-                for (const std::uint32_t j : other.touched) {
-                    if (j - lo >= hi - lo) continue;
-                    p.force[j] += other.force[j];
-                    p.torque[j] += other.torque[j];
-                    other.force[j] = Vec3{};
-                    other.torque[j] = Vec3{};
-                    if constexpr (SelfBlocks) {
-                        block_[j] += other.block[j];
-                        other.block[j] = SelfBlock{};
-                    }
-                    other.marked[j] = 0;
-                }
-            }
+            add_cross_range<SelfBlocks>(t, lo, hi);
 #pragma omp barrier
             own.touched.clear();
         }

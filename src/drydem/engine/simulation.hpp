@@ -132,6 +132,11 @@ private:
     void pair_forces(std::size_t wall_contacts, double wall_overlap);
     template <bool SelfBlocks>
     void pair_loop(std::size_t& contacts, double& max_overlap);
+    /// First row of thread t's share of the list (rows weighted by their slots + 1), t < parts.
+    [[nodiscard]] std::size_t row_split(std::size_t t, std::size_t parts) const;
+    /// Thread t adds, for its rows [lo, hi), what the other threads wrote across (thread order).
+    template <bool SelfBlocks>
+    void add_cross_range(std::size_t t, std::size_t lo, std::size_t hi);
     /// Semi-implicit: the accelerations (M_i + Δt D_i)⁻¹ [F_i; T_i] of particle i, its pair
     /// self-block reset for the next evaluation.
     void implicit_acceleration(std::size_t i);

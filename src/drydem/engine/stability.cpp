@@ -75,63 +75,76 @@ double quadratic(const SelfBlock& d, const Vec3& v, const Vec3& w) {
     return va + wb + 2.0 * dot(w, cross(d.k, v)); // w^T [k]× v appears twice
 }
 
-} // namespace
+/// The guard's operators: per thread, the damping R (explicit only; at the skin-reduced gaps)
+/// and the stiffness K entries of its rows; the semi-implicit self-blocks D at the current gaps.
+struct GuardOperators {
+    std::vector<Operator> damping, stiffness;
+    std::vector<SelfBlock> blocks; ///< semi-implicit only
+};
 
-Simulation::StabilityEstimate Simulation::stability_estimate() const {
-    const ParticleStore& p = p_;
-    const std::size_t n = p.size();
-    StabilityEstimate out;
-    if (n == 0 || nl_.owners() != n) return out;
-    const double skin = nl_.skin();
-    const bool semi = semi_implicit();
-    // Thread t collects the entries of the rows [lo_t, hi_t) in its own operators and self-blocks;
-    // every sum below runs over the threads in a fixed order, so the estimate is the same run to
-    // run (and bit for bit the serial one with one thread).
-    const std::size_t threads = std::size_t(threads_);
-    auto lo_of = [&](std::size_t t) { return n * t / threads; };
-    std::vector<Operator> damping(threads), stiffness(threads);
+/// What the estimate reads of the engine.
+struct GuardInputs {
+    const ParticleStore& p;
+    const NeighborList& nl;
+    const Box& box;
+    const ForceField& ff;
+    double liquid_level;
+    bool semi;
+    std::size_t threads;
+    [[nodiscard]] std::size_t lo_of(std::size_t t) const { return p.size() * t / threads; }
+};
+
+/// Thread t collects the entries of the rows [lo_t, hi_t) in its own operators and self-block
+/// shares; every sum runs over the threads in a fixed order, so the operators are the same run to
+/// run (and bit for bit the serial ones with one thread).
+GuardOperators assemble_operators(const GuardInputs& in) {
+    const ParticleStore& p = in.p;
+    const std::size_t n = p.size(), threads = in.threads;
+    const double skin = in.nl.skin();
+    const bool semi = in.semi;
+    auto lo_of = [&](std::size_t t) { return in.lo_of(t); };
+    GuardOperators op{std::vector<Operator>(threads), std::vector<Operator>(threads),
+                      std::vector<SelfBlock>(semi ? n : 0)};
     // D_i at the current gaps (semi-implicit): thread t's share of every particle's block.
     std::vector<std::vector<SelfBlock>> share(semi ? threads : 0, std::vector<SelfBlock>(n));
-    std::vector<SelfBlock> blocks(semi ? n : 0);
-
-#pragma omp parallel num_threads(threads_)
+#pragma omp parallel num_threads(int(threads))
     {
     const std::size_t t = std::size_t(omp_get_thread_num());
-    Operator& damping_t = damping[t];
-    Operator& stiffness_t = stiffness[t];
+    Operator& damping_t = op.damping[t];
+    Operator& stiffness_t = op.stiffness[t];
     std::vector<SelfBlock>* blocks_t = semi ? &share[t] : nullptr;
     for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) {
         const double r = p.radius[i], z = p.position[i].z;
         const int si = p.species[i];
         // Body laws. Dissipative: drag, substrate lubrication and contact damping.
-        BodyResistance fluid = stokes_drag_resistance(r, ff_.drag);
+        BodyResistance fluid = stokes_drag_resistance(r, in.ff.drag);
         BodyResistance fluid_now = fluid;
         BodyResistance spring;
-        if (ff_.substrate_on) {
-            fluid += substrate_lubrication_resistance(z - skin, r, ff_.substrate_lubrication);
-            fluid_now += substrate_lubrication_resistance(z, r, ff_.substrate_lubrication);
+        if (in.ff.substrate_on) {
+            fluid += substrate_lubrication_resistance(z - skin, r, in.ff.substrate_lubrication);
+            fluid_now += substrate_lubrication_resistance(z, r, in.ff.substrate_lubrication);
             const double overlap = r - (z - skin);
             if (overlap > 0.0) {
                 const HertzMindlinCoefficients co =
-                    hertz_mindlin_coefficients(r, overlap, p.mass[i], ff_.substrate[si]);
+                    hertz_mindlin_coefficients(r, overlap, p.mass[i], in.ff.substrate[si]);
                 fluid += wall_pair_resistance(co.gamma_n, co.gamma_t, r - overlap);
                 spring += wall_pair_resistance(co.s_n, co.s_t, r - overlap);
             }
             if (r - z > 0.0) {
                 const HertzMindlinCoefficients co =
-                    hertz_mindlin_coefficients(r, r - z, p.mass[i], ff_.substrate[si]);
+                    hertz_mindlin_coefficients(r, r - z, p.mass[i], in.ff.substrate[si]);
                 fluid_now += wall_pair_resistance(co.gamma_n, co.gamma_t, z);
             }
         }
-        if (std::abs(liquid_level_ - z) < r + skin) spring.normal += capillary_stiffness(ff_.capillary);
+        if (std::abs(in.liquid_level - z) < r + skin) spring.normal += capillary_stiffness(in.ff.capillary);
         if (!semi) damping_t.bodies.push_back({std::uint32_t(i), fluid});
         else add_self_block((*blocks_t)[i], fluid_now);
         if (spring.normal > 0.0) stiffness_t.bodies.push_back({std::uint32_t(i), spring});
 
-        for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
-            const std::uint32_t j = nl_.partner(s);
-            const PairParams& pp = ff_.pair_params(si, p.species[j]);
-            const Vec3 d = box_.minimum_image(p.position[i], p.position[j]);
+        for (std::uint32_t s = in.nl.begin(i); s < in.nl.end(i); ++s) {
+            const std::uint32_t j = in.nl.partner(s);
+            const PairParams& pp = in.ff.pair_params(si, p.species[j]);
+            const Vec3 d = in.box.minimum_image(p.position[i], p.position[j]);
             const double dist = norm(d);
             const PairGeometry now = make_pair_geometry(d, dist, r, p.radius[j], p.mass[i],
                                                         p.mass[j], {}, {}, {}, {});
@@ -157,102 +170,124 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
     if (semi) {
 #pragma omp barrier
         for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i)
-            for (std::size_t u = 0; u < threads; ++u) blocks[i] += share[u][i];
+            for (std::size_t u = 0; u < threads; ++u) op.blocks[i] += share[u][i];
     }
     }
 
-    // Power iteration on M_eff⁻¹ A; returns λ_max (Rayleigh quotient in the M_eff norm).
+    return op;
+}
+
+/// λ_max of M_eff⁻¹ A by power iteration (Rayleigh quotient in the M_eff norm, M_eff = M + s D)
+/// from a random start seeded by the step; x keeps the last iterate (for the peak particle).
+double largest_rate(const GuardInputs& in, const std::vector<Operator>& a, const std::vector<SelfBlock>& blocks,
+                    double s, std::uint64_t step, std::vector<double>& x, int& iterations) {
+    const ParticleStore& p = in.p;
+    const std::size_t n = p.size(), threads = in.threads;
+    const bool semi = in.semi;
+    auto lo_of = [&](std::size_t t) { return in.lo_of(t); };
     std::vector<double> y(6 * n);
     std::vector<std::vector<double>> y_share(threads > 1 ? threads : 0, std::vector<double>(6 * n));
     std::vector<double> partial(threads);
-    auto largest = [&](const std::vector<Operator>& a, double s, std::vector<double>& x) {
-        std::mt19937_64 rng(0x5eed ^ std::uint64_t(step_));
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
-        // A fresh random start (seeded by the step) every call, never the last call's vector: the
-        // estimate must follow from the engine state alone, so that a resumed run is bit-identical.
-        x.resize(6 * n);
-        for (double& v : x) v = u(rng);
-        const SelfBlock none{};
-        auto block = [&](std::size_t i) -> const SelfBlock& { return semi ? blocks[i] : none; };
-        // Σ_i term(i), each thread over its rows, the threads' sums added in order.
-        auto ordered_sum = [&](auto&& term) {
-#pragma omp parallel num_threads(threads_)
-            {
-                const std::size_t t = std::size_t(omp_get_thread_num());
-                double q = 0.0;
-                for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) q += term(i);
-                partial[t] = q;
-            }
+    std::mt19937_64 rng(0x5eed ^ step);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    // A fresh random start (seeded by the step) every call, never the last call's vector: the
+    // estimate must follow from the engine state alone, so that a resumed run is bit-identical.
+    x.resize(6 * n);
+    for (double& v : x) v = u(rng);
+    const SelfBlock none{};
+    auto block = [&](std::size_t i) -> const SelfBlock& { return semi ? blocks[i] : none; };
+    // Σ_i term(i), each thread over its rows, the threads' sums added in order.
+    auto ordered_sum = [&](auto&& term) {
+#pragma omp parallel num_threads(int(threads))
+        {
+            const std::size_t t = std::size_t(omp_get_thread_num());
             double q = 0.0;
-            for (double v : partial) q += v;
-            return q;
-        };
-        auto mass_norm2 = [&](std::size_t i) {
-            const Vec3 v{x[6 * i], x[6 * i + 1], x[6 * i + 2]};
-            const Vec3 w{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]};
-            return p.mass[i] * norm2(v) + norm2(w) / p.inv_inertia[i] + s * quadratic(block(i), v, w);
-        };
-        double lambda = 0.0;
-        int it = 0;
-        for (; it < 60; ++it) {
-            const double q = ordered_sum(mass_norm2);
-            if (!(q > 0.0)) break;
-            const double scale = 1.0 / std::sqrt(q);
-#pragma omp parallel num_threads(threads_)
-            {
-                const std::size_t t = std::size_t(omp_get_thread_num());
-                for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) x[k] *= scale;
+            for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) q += term(i);
+            partial[t] = q;
+        }
+        double q = 0.0;
+        for (double v : partial) q += v;
+        return q;
+    };
+    auto mass_norm2 = [&](std::size_t i) {
+        const Vec3 v{x[6 * i], x[6 * i + 1], x[6 * i + 2]};
+        const Vec3 w{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]};
+        return p.mass[i] * norm2(v) + norm2(w) / p.inv_inertia[i] + s * quadratic(block(i), v, w);
+    };
+    double lambda = 0.0;
+    int it = 0;
+    for (; it < 60; ++it) {
+        const double q = ordered_sum(mass_norm2);
+        if (!(q > 0.0)) break;
+        const double scale = 1.0 / std::sqrt(q);
+#pragma omp parallel num_threads(int(threads))
+        {
+            const std::size_t t = std::size_t(omp_get_thread_num());
+            for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) x[k] *= scale;
 #pragma omp barrier
-                // y = A x: each thread applies its rows' entries into its own share of y (all
-                // of y with one thread), then the shares are added in thread order.
-                double* y_t = threads > 1 ? y_share[t].data() : y.data();
-                std::fill(y_t, y_t + 6 * n, 0.0);
-                apply_add(a[t], x, y_t);
-                if (threads > 1) {
+            // y = A x: each thread applies its rows' entries into its own share of y (all
+            // of y with one thread), then the shares are added in thread order.
+            double* y_t = threads > 1 ? y_share[t].data() : y.data();
+            std::fill(y_t, y_t + 6 * n, 0.0);
+            apply_add(a[t], x, y_t);
+            if (threads > 1) {
 #pragma omp barrier
-                    for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) {
-                        double sum = 0.0;
-                        for (std::size_t v = 0; v < threads; ++v) sum += y_share[v][k];
-                        y[k] = sum;
-                    }
+                for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) {
+                    double sum = 0.0;
+                    for (std::size_t v = 0; v < threads; ++v) sum += y_share[v][k];
+                    y[k] = sum;
                 }
             }
-            const double rayleigh = ordered_sum([&](std::size_t i) {
-                double r = 0.0;
-                for (std::size_t k = 6 * i; k < 6 * i + 6; ++k) r += x[k] * y[k];
-                return r;
-            });
-            const bool converged = it >= 8 && std::abs(rayleigh - lambda) < 1e-3 * rayleigh;
-            lambda = rayleigh;
-            if (converged) break;
-#pragma omp parallel for schedule(static) num_threads(threads_)
-            for (std::size_t i = 0; i < n; ++i) {
-                Vec3 av, aw;
-                solve_self_block(block(i), s, p.mass[i], 1.0 / p.inv_inertia[i],
-                                 {y[6 * i], y[6 * i + 1], y[6 * i + 2]},
-                                 {y[6 * i + 3], y[6 * i + 4], y[6 * i + 5]}, av, aw);
-                x[6 * i] = av.x, x[6 * i + 1] = av.y, x[6 * i + 2] = av.z;
-                x[6 * i + 3] = aw.x, x[6 * i + 4] = aw.y, x[6 * i + 5] = aw.z;
-            }
         }
-        out.iterations += it;
-        return lambda;
-    };
-    auto peak = [&](const std::vector<double>& x) {
-        std::size_t best = 0;
-        double top = -1.0;
+        const double rayleigh = ordered_sum([&](std::size_t i) {
+            double r = 0.0;
+            for (std::size_t k = 6 * i; k < 6 * i + 6; ++k) r += x[k] * y[k];
+            return r;
+        });
+        const bool converged = it >= 8 && std::abs(rayleigh - lambda) < 1e-3 * rayleigh;
+        lambda = rayleigh;
+        if (converged) break;
+#pragma omp parallel for schedule(static) num_threads(int(threads))
         for (std::size_t i = 0; i < n; ++i) {
-            double e = 0.0;
-            for (int k = 0; k < 6; ++k) e += x[6 * i + k] * x[6 * i + k];
-            if (e > top) top = e, best = i;
+            Vec3 av, aw;
+            solve_self_block(block(i), s, p.mass[i], 1.0 / p.inv_inertia[i],
+                             {y[6 * i], y[6 * i + 1], y[6 * i + 2]},
+                             {y[6 * i + 3], y[6 * i + 4], y[6 * i + 5]}, av, aw);
+            x[6 * i] = av.x, x[6 * i + 1] = av.y, x[6 * i + 2] = av.z;
+            x[6 * i + 3] = aw.x, x[6 * i + 4] = aw.y, x[6 * i + 5] = aw.z;
         }
-        return p.id[best];
-    };
-    if (!semi) out.damping_rate = largest(damping, 0.0, guard_vector_[0]);
-    const double omega2 = largest(stiffness, semi ? settings_.dt : 0.0, guard_vector_[1]);
+    }
+    iterations += it;
+    return lambda;
+}
+
+/// Id of the particle where the vector x is largest.
+std::uint32_t peak_particle(const ParticleStore& p, const std::vector<double>& x) {
+    std::size_t best = 0;
+    double top = -1.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        double e = 0.0;
+        for (int k = 0; k < 6; ++k) e += x[6 * i + k] * x[6 * i + k];
+        if (e > top) top = e, best = i;
+    }
+    return p.id[best];
+}
+
+} // namespace
+
+Simulation::StabilityEstimate Simulation::stability_estimate() const {
+    StabilityEstimate out;
+    if (p_.size() == 0 || nl_.owners() != p_.size()) return out;
+    const bool semi = semi_implicit();
+    const GuardInputs in{p_, nl_, box_, ff_, liquid_level_, semi, std::size_t(threads_)};
+    const GuardOperators op = assemble_operators(in);
+    const std::uint64_t step = std::uint64_t(step_);
+    if (!semi) out.damping_rate = largest_rate(in, op.damping, op.blocks, 0.0, step, guard_vector_[0], out.iterations);
+    const double omega2 =
+        largest_rate(in, op.stiffness, op.blocks, semi ? settings_.dt : 0.0, step, guard_vector_[1], out.iterations);
     out.stiffness_rate = std::sqrt(std::max(omega2, 0.0));
     const bool damping_limits = !semi && out.damping_rate * 2.0 > out.stiffness_rate;
-    out.particle_id = peak(damping_limits ? guard_vector_[0] : guard_vector_[1]);
+    out.particle_id = peak_particle(p_, damping_limits ? guard_vector_[0] : guard_vector_[1]);
     return out;
 }
 

@@ -10,10 +10,11 @@ namespace drydem {
 
 using namespace analysis;
 
-nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOptions& o, const std::string& source) {
-    nlohmann::ordered_json j;
+namespace {
+
+/// Thickness, density, porosity, masses (Bulk) and the coordination numbers.
+void add_bulk(nlohmann::ordered_json& j, const AnalysisResult& r) {
     const Bulk& b = r.bulk;
-    j["source"] = source;
     j["thickness_um"] = b.thickness * 1e6;
     j["thickness_half_solid_um"] = b.thickness_half_solid * 1e6;
     j["bulk_solid_fraction"] = b.bulk_solid_fraction;
@@ -40,132 +41,151 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
         {"ncm_substrate_fraction", c.n_ncm ? double(c.ncm_substrate) / double(c.n_ncm) : 0.0},
         {"cb_substrate_fraction", c.n_cb ? double(c.cb_substrate) / double(c.n_cb) : 0.0},
         {"mean", c.mean()}};
+}
+
+/// The voxel image's porosity, chord lengths, pore sizes and timings.
+void add_voxels(nlohmann::ordered_json& j, const AnalysisResult& r, const AnalysisOptions& o) {
+    const double a = r.voxel * 1e6;
+    j["voxel_size_um"] = a;
+    j["voxels"] = {r.nx, r.ny, r.nz};
+    j["pore_top"] = o.pore_top;
+    j["pore_top_um"] = r.pore_top_layer * a;
+    j["voxel_porosity"] = r.voxel_porosity;
+    j["voxel_ncm_fraction"] = r.voxel_ncm_fraction;
+    j["voxel_cb_fraction"] = r.voxel_cb_fraction;
+    j["porosity_with_cb_pores"] = r.porosity_with_cb_pores;
+    const char* axes[3] = {"x", "y", "z"};
+    nlohmann::ordered_json mean, lw, count;
+    for (int d = 0; d < 3; ++d) {
+        mean[axes[d]] = r.chords[std::size_t(d)].mean_voxels() * a;
+        lw[axes[d]] = r.chords[std::size_t(d)].length_weighted_mean_voxels() * a;
+        count[axes[d]] = r.chords[std::size_t(d)].chords();
+    }
+    j["pore_chord_mean_um"] = mean;
+    j["pore_chord_length_weighted_mean_um"] = lw;
+    j["pore_chords"] = count;
+    j["psd_peak_um"] = r.psd.peak * 1e6;
+    j["psd_median_um"] = r.psd.median * 1e6;
+    j["mercury_median_um"] = r.psd.mip_median * 1e6;
+    j["mercury_not_intruded_fraction"] = r.psd.not_intruded;
+    j["distance_saturated"] = r.distance_saturated;
+    j["timings_s"] = {{"voxelize", r.seconds.at(0)}, {"chords", r.seconds.at(1)},
+                      {"distance_transform", r.seconds.at(2)}, {"invasion", r.seconds.at(3)},
+                      {"local_thickness", r.seconds.at(4)}, {"intrusion", r.seconds.at(5)}};
+    j["voxel_memory_mb"] = double(r.memory_bytes) / 1e6;
+}
+
+/// Tortuosity, MacMullin number, conductivities and the voxel-size convergence.
+nlohmann::ordered_json transport_json(const Transport& t) {
+    const TransportLevel& L = t.reported();
+    const double tau_in = 0.5 * (L.tau_x + L.tau_y);
+    auto nan_null = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
+    nlohmann::ordered_json tj;
+    tj["coating_top_um"] = L.nz * L.voxel * 1e6;
+    tj["voxel_size_um"] = L.voxel * 1e6;
+    tj["voxels"] = {L.nx, L.ny, L.nz};
+    tj["porosity"] = L.porosity;
+    tj["pore_percolating_fraction"] = L.pore_z.percolating_fraction;
+    tj["tortuosity_factor"] = {{"through_plane", L.tau_z}, {"in_plane", tau_in}, {"x", L.tau_x}, {"y", L.tau_y}};
+    tj["macmullin_number"] = {{"through_plane", L.tau_z / L.porosity}, {"in_plane", tau_in / L.porosity}};
+    tj["bruggeman_exponent"] = {{"through_plane", nan_null(bruggeman_exponent(L.porosity, L.tau_z))},
+                                {"in_plane", nan_null(bruggeman_exponent(L.porosity, tau_in))}};
+    tj["ncm_conductivity_S_m"] = t.sigma_ncm;
+    tj["cb_conductivity_S_m"] = t.sigma_cb;
+    tj["electronic_conductivity_S_m"] = L.electronic_z.sigma_eff;
+    tj["solid_percolates"] = L.electronic_z.percolates;
+    tj["cb_percolates"] = L.cb_z.percolates;
+    tj["cb_network_conductivity_S_m"] = L.cb_z.sigma_eff;
+    tj["cb_percolating_fraction_of_cb"] =
+        L.cb_z.conducting_fraction > 0 ? L.cb_z.percolating_fraction / L.cb_z.conducting_fraction : 0.0;
+    bool converged = true;
+    double balance = 0.0;
+    for (const ConductionResult* cr : {&L.pore_z, &L.pore_x, &L.pore_y, &L.electronic_z, &L.cb_z}) {
+        if (cr->unknowns == 0) continue;
+        converged = converged && cr->converged;
+        balance = std::max(balance, cr->flux_balance);
+    }
+    if (L.walk.walkers > 0) {
+        auto tau = [&](int d) { return L.walk.diffusivity[d] > 0 ? 1.0 / L.walk.diffusivity[d] : 0.0; };
+        auto err = [&](int d) {
+            const double D = L.walk.diffusivity[d];
+            return D > 0 ? L.walk.standard_error[d] / (D * D) : 0.0;
+        };
+        tj["random_walk"] = {{"method", "blind-ant walks in the pores, x, y periodic (second method)"},
+                             {"walkers", L.walk.walkers},
+                             {"steps", L.walk.steps},
+                             {"tortuosity_x", tau(0)},
+                             {"tortuosity_x_standard_error", err(0)},
+                             {"tortuosity_y", tau(1)},
+                             {"tortuosity_y_standard_error", err(1)},
+                             {"seconds", L.walk.seconds}};
+    }
+    tj["solver"] = {{"method", std::string("Eigen ConjugateGradient, ") + L.pore_z.preconditioner + " preconditioner"},
+                    {"converged", converged},
+                    {"max_flux_balance", balance}};
+    nlohmann::ordered_json conv = nlohmann::ordered_json::array();
+    for (const TransportLevel& l : t.levels)
+        conv.push_back({{"voxel_size_um", l.voxel * 1e6},
+                        {"voxels", {l.nx, l.ny, l.nz}},
+                        {"porosity", l.porosity},
+                        {"tortuosity_through_plane", l.tau_z},
+                        {"tortuosity_x", l.tau_x},
+                        {"tortuosity_y", l.tau_y},
+                        {"electronic_conductivity_S_m", l.electronic_z.sigma_eff},
+                        {"cb_percolates", l.cb_z.percolates},
+                        {"cg_iterations_through_plane", l.pore_z.iterations},
+                        {"seconds", l.seconds},
+                        {"memory_mb", double(l.memory_bytes) / 1e6}});
+    tj["convergence"] = conv;
+    return tj;
+}
+
+/// The NCM surface split (electrolyte, CB-covered, contacts, substrate).
+void add_surfaces(nlohmann::ordered_json& j, const AnalysisResult& r) {
+    const Surfaces& a = r.surfaces;
+    const double volume = r.bulk.thickness * r.base_area;
+    j["ncm_surface"] = {
+        {"cb_coverage_gap_um", a.gap * 1e6},
+        {"total_um2", a.total * 1e12},
+        {"electrolyte_fraction", a.electrolyte_fraction()},
+        {"cb_covered_fraction", a.cb_covered_fraction()},
+        {"cb_overlap_fraction", a.total > 0 ? a.cb_overlap / a.total : 0.0},
+        {"ncm_contact_fraction", a.total > 0 ? a.ncm_contact / a.total : 0.0},
+        {"substrate_fraction", a.total > 0 ? a.substrate / a.total : 0.0},
+        {"specific_surface_electrolyte_per_um", volume > 0 ? a.electrolyte / volume * 1e-6 : 0.0},
+        {"specific_surface_electrolyte_m2_g", r.bulk.mass.ncm > 0 ? a.electrolyte / (r.bulk.mass.ncm * 1e3) : 0.0}};
+}
+
+/// The binder migration model's profile summary and its drying-rate variants.
+void add_binder(nlohmann::ordered_json& j, const AnalysisResult& r, const AnalysisOptions& o) {
+    const BinderProfile& bp = *r.binder;
+    nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+    rates.push_back({{"rate_factor", 1.0}, {"peclet", bp.peclet}, {"bottom10", bp.bottom10}, {"top10", bp.top10}});
+    for (const auto& [f, bf] : r.binder_rates)
+        rates.push_back({{"rate_factor", f}, {"peclet", bf.peclet}, {"bottom10", bf.bottom10}, {"top10", bf.top10}});
+    j["binder_migration"] = {{"model", "paper Eq. 1, 1D convection-diffusion (docs/analysis.md)"},
+                             {"diffusivity_m2_s", o.binder.diffusivity},
+                             {"evaporation_velocity_um_s", bp.evaporation_rate * 1e6},
+                             {"peclet", bp.peclet},
+                             {"consolidation_time_s", bp.consolidation_time},
+                             {"end_time_s", bp.end_time},
+                             {"bottom10_over_mean", bp.bottom10},
+                             {"top10_over_mean", bp.top10},
+                             {"mass_balance", bp.mass_balance},
+                             {"drying_rate_factors", rates}};
+}
+
+} // namespace
+
+nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOptions& o, const std::string& source) {
+    nlohmann::ordered_json j;
+    j["source"] = source;
+    add_bulk(j, r);
     j["profile_dz_um"] = o.profile_dz * 1e6;
-    if (r.voxelized) {
-        const double a = r.voxel * 1e6;
-        j["voxel_size_um"] = a;
-        j["voxels"] = {r.nx, r.ny, r.nz};
-        j["pore_top"] = o.pore_top;
-        j["pore_top_um"] = r.pore_top_layer * a;
-        j["voxel_porosity"] = r.voxel_porosity;
-        j["voxel_ncm_fraction"] = r.voxel_ncm_fraction;
-        j["voxel_cb_fraction"] = r.voxel_cb_fraction;
-        j["porosity_with_cb_pores"] = r.porosity_with_cb_pores;
-        const char* axes[3] = {"x", "y", "z"};
-        nlohmann::ordered_json mean, lw, count;
-        for (int d = 0; d < 3; ++d) {
-            mean[axes[d]] = r.chords[std::size_t(d)].mean_voxels() * a;
-            lw[axes[d]] = r.chords[std::size_t(d)].length_weighted_mean_voxels() * a;
-            count[axes[d]] = r.chords[std::size_t(d)].chords();
-        }
-        j["pore_chord_mean_um"] = mean;
-        j["pore_chord_length_weighted_mean_um"] = lw;
-        j["pore_chords"] = count;
-        j["psd_peak_um"] = r.psd.peak * 1e6;
-        j["psd_median_um"] = r.psd.median * 1e6;
-        j["mercury_median_um"] = r.psd.mip_median * 1e6;
-        j["mercury_not_intruded_fraction"] = r.psd.not_intruded;
-        j["distance_saturated"] = r.distance_saturated;
-        j["timings_s"] = {{"voxelize", r.seconds.at(0)}, {"chords", r.seconds.at(1)},
-                          {"distance_transform", r.seconds.at(2)}, {"invasion", r.seconds.at(3)},
-                          {"local_thickness", r.seconds.at(4)}, {"intrusion", r.seconds.at(5)}};
-        j["voxel_memory_mb"] = double(r.memory_bytes) / 1e6;
-    }
-    if (r.transport && !r.transport->levels.empty()) {
-        const Transport& t = *r.transport;
-        const TransportLevel& L = t.reported();
-        const double tau_in = 0.5 * (L.tau_x + L.tau_y);
-        auto nan_null = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
-        nlohmann::ordered_json tj;
-        tj["coating_top_um"] = L.nz * L.voxel * 1e6;
-        tj["voxel_size_um"] = L.voxel * 1e6;
-        tj["voxels"] = {L.nx, L.ny, L.nz};
-        tj["porosity"] = L.porosity;
-        tj["pore_percolating_fraction"] = L.pore_z.percolating_fraction;
-        tj["tortuosity_factor"] = {{"through_plane", L.tau_z}, {"in_plane", tau_in}, {"x", L.tau_x}, {"y", L.tau_y}};
-        tj["macmullin_number"] = {{"through_plane", L.tau_z / L.porosity}, {"in_plane", tau_in / L.porosity}};
-        tj["bruggeman_exponent"] = {{"through_plane", nan_null(bruggeman_exponent(L.porosity, L.tau_z))},
-                                    {"in_plane", nan_null(bruggeman_exponent(L.porosity, tau_in))}};
-        tj["ncm_conductivity_S_m"] = t.sigma_ncm;
-        tj["cb_conductivity_S_m"] = t.sigma_cb;
-        tj["electronic_conductivity_S_m"] = L.electronic_z.sigma_eff;
-        tj["solid_percolates"] = L.electronic_z.percolates;
-        tj["cb_percolates"] = L.cb_z.percolates;
-        tj["cb_network_conductivity_S_m"] = L.cb_z.sigma_eff;
-        tj["cb_percolating_fraction_of_cb"] =
-            L.cb_z.conducting_fraction > 0 ? L.cb_z.percolating_fraction / L.cb_z.conducting_fraction : 0.0;
-        bool converged = true;
-        double balance = 0.0;
-        for (const ConductionResult* cr : {&L.pore_z, &L.pore_x, &L.pore_y, &L.electronic_z, &L.cb_z}) {
-            if (cr->unknowns == 0) continue;
-            converged = converged && cr->converged;
-            balance = std::max(balance, cr->flux_balance);
-        }
-        if (L.walk.walkers > 0) {
-            auto tau = [&](int d) { return L.walk.diffusivity[d] > 0 ? 1.0 / L.walk.diffusivity[d] : 0.0; };
-            auto err = [&](int d) {
-                const double D = L.walk.diffusivity[d];
-                return D > 0 ? L.walk.standard_error[d] / (D * D) : 0.0;
-            };
-            tj["random_walk"] = {{"method", "blind-ant walks in the pores, x, y periodic (second method)"},
-                                 {"walkers", L.walk.walkers},
-                                 {"steps", L.walk.steps},
-                                 {"tortuosity_x", tau(0)},
-                                 {"tortuosity_x_standard_error", err(0)},
-                                 {"tortuosity_y", tau(1)},
-                                 {"tortuosity_y_standard_error", err(1)},
-                                 {"seconds", L.walk.seconds}};
-        }
-        tj["solver"] = {{"method", std::string("Eigen ConjugateGradient, ") + L.pore_z.preconditioner + " preconditioner"},
-                        {"converged", converged},
-                        {"max_flux_balance", balance}};
-        nlohmann::ordered_json conv = nlohmann::ordered_json::array();
-        for (const TransportLevel& l : t.levels)
-            conv.push_back({{"voxel_size_um", l.voxel * 1e6},
-                            {"voxels", {l.nx, l.ny, l.nz}},
-                            {"porosity", l.porosity},
-                            {"tortuosity_through_plane", l.tau_z},
-                            {"tortuosity_x", l.tau_x},
-                            {"tortuosity_y", l.tau_y},
-                            {"electronic_conductivity_S_m", l.electronic_z.sigma_eff},
-                            {"cb_percolates", l.cb_z.percolates},
-                            {"cg_iterations_through_plane", l.pore_z.iterations},
-                            {"seconds", l.seconds},
-                            {"memory_mb", double(l.memory_bytes) / 1e6}});
-        tj["convergence"] = conv;
-        j["transport"] = tj;
-    }
-    if (r.surfaces.computed) {
-        const Surfaces& a = r.surfaces;
-        const double volume = r.bulk.thickness * r.base_area;
-        j["ncm_surface"] = {
-            {"cb_coverage_gap_um", a.gap * 1e6},
-            {"total_um2", a.total * 1e12},
-            {"electrolyte_fraction", a.electrolyte_fraction()},
-            {"cb_covered_fraction", a.cb_covered_fraction()},
-            {"cb_overlap_fraction", a.total > 0 ? a.cb_overlap / a.total : 0.0},
-            {"ncm_contact_fraction", a.total > 0 ? a.ncm_contact / a.total : 0.0},
-            {"substrate_fraction", a.total > 0 ? a.substrate / a.total : 0.0},
-            {"specific_surface_electrolyte_per_um", volume > 0 ? a.electrolyte / volume * 1e-6 : 0.0},
-            {"specific_surface_electrolyte_m2_g", r.bulk.mass.ncm > 0 ? a.electrolyte / (r.bulk.mass.ncm * 1e3) : 0.0}};
-    }
-    if (r.binder) {
-        const BinderProfile& bp = *r.binder;
-        nlohmann::ordered_json rates = nlohmann::ordered_json::array();
-        rates.push_back({{"rate_factor", 1.0}, {"peclet", bp.peclet}, {"bottom10", bp.bottom10}, {"top10", bp.top10}});
-        for (const auto& [f, bf] : r.binder_rates)
-            rates.push_back({{"rate_factor", f}, {"peclet", bf.peclet}, {"bottom10", bf.bottom10}, {"top10", bf.top10}});
-        j["binder_migration"] = {{"model", "paper Eq. 1, 1D convection-diffusion (docs/analysis.md)"},
-                                 {"diffusivity_m2_s", o.binder.diffusivity},
-                                 {"evaporation_velocity_um_s", bp.evaporation_rate * 1e6},
-                                 {"peclet", bp.peclet},
-                                 {"consolidation_time_s", bp.consolidation_time},
-                                 {"end_time_s", bp.end_time},
-                                 {"bottom10_over_mean", bp.bottom10},
-                                 {"top10_over_mean", bp.top10},
-                                 {"mass_balance", bp.mass_balance},
-                                 {"drying_rate_factors", rates}};
-    }
+    if (r.voxelized) add_voxels(j, r, o);
+    if (r.transport && !r.transport->levels.empty()) j["transport"] = transport_json(*r.transport);
+    if (r.surfaces.computed) add_surfaces(j, r);
+    if (r.binder) add_binder(j, r, o);
     j["version"] = DRYDEM_VERSION;
     j["git_commit"] = DRYDEM_GIT_HASH;
     return j;
