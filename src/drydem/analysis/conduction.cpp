@@ -109,29 +109,21 @@ std::vector<std::uint8_t> spanning_clusters(const ConductionProblem& p) {
     return mask;
 }
 
-ConductionResult solve_conduction(const ConductionProblem& p) {
-    const auto t0 = std::chrono::steady_clock::now();
-    ConductionResult r;
-    const std::vector<std::uint8_t> keep = spanning_clusters(p);
-    const Lattice L(p);
-    const std::size_t nv = L.size();
-    std::size_t conducting = 0, kept = 0;
-    for (std::size_t i = 0; i < nv; ++i) {
-        conducting += p.sigma[i] > 0.0f;
-        kept += keep[i];
-    }
-    r.conducting_fraction = double(conducting) / double(nv);
-    r.percolating_fraction = double(kept) / double(nv);
-    r.percolates = kept > 0;
-    r.memory_bytes = nv * (sizeof(float) + 1);
-    auto finish = [&] {
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return r;
-    };
-    if (!r.percolates) return finish();
-    if (kept >= std::size_t(std::numeric_limits<int>::max() / 8))
-        throw InputError(fmt::format("conduction: {} unknowns, too many for one solve; coarsen the voxels", kept));
+namespace {
 
+/// The finite-volume system of one conduction problem over the spanning clusters `keep`: the
+/// conductance matrix in CSR (symmetric), the inlet right-hand side, the homogeneous first guess
+/// and the conductances of the fixed faces.
+struct ConductionSystem {
+    int n = 0;
+    std::vector<int> outer, inner;
+    std::vector<double> values;
+    Eigen::VectorXd b, guess, g_in, g_out;
+};
+
+ConductionSystem assemble(const ConductionProblem& p, const Lattice& L, const std::vector<std::uint8_t>& keep,
+                          std::size_t kept) {
+    const std::size_t nv = L.size();
     // Unknowns in voxel order.
     std::vector<int> row_of(nv, -1);
     std::vector<std::size_t> voxel_of(kept);
@@ -144,14 +136,21 @@ ConductionResult solve_conduction(const ConductionProblem& p) {
             }
     }
     const int n = int(kept);
+    ConductionSystem sys;
+    sys.n = n;
+    std::vector<int>& outer = sys.outer;
+    std::vector<int>& inner = sys.inner;
+    std::vector<double>& values = sys.values;
     const int d_axis = L.axis, last = L.n[std::size_t(d_axis)] - 1;
     const double g_face_axis = L.shape(d_axis);
-    std::vector<int> outer(std::size_t(n) + 1, 0), inner;
-    std::vector<double> values;
+    outer.assign(std::size_t(n) + 1, 0);
     inner.reserve(std::size_t(n) * 7);
     values.reserve(std::size_t(n) * 7);
-    Eigen::VectorXd b = Eigen::VectorXd::Zero(n), guess(n), g_in = Eigen::VectorXd::Zero(n),
-                    g_out = Eigen::VectorXd::Zero(n);
+    sys.b = Eigen::VectorXd::Zero(n);
+    sys.guess.resize(n);
+    sys.g_in = Eigen::VectorXd::Zero(n);
+    sys.g_out = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd &b = sys.b, &guess = sys.guess, &g_in = sys.g_in, &g_out = sys.g_out;
     std::array<std::pair<int, double>, 7> entries{};
     for (int row = 0; row < n; ++row) {
         const std::size_t idx = voxel_of[std::size_t(row)];
@@ -191,8 +190,41 @@ ConductionResult solve_conduction(const ConductionProblem& p) {
         outer[std::size_t(row) + 1] = int(inner.size());
         guess[row] = 1.0 - (x + 0.5) / double(last + 1); // the homogeneous solution
     }
-    std::vector<int>().swap(row_of);
-    std::vector<std::size_t>().swap(voxel_of);
+    return sys;
+}
+
+} // namespace
+
+ConductionResult solve_conduction(const ConductionProblem& p) {
+    const auto t0 = std::chrono::steady_clock::now();
+    ConductionResult r;
+    const std::vector<std::uint8_t> keep = spanning_clusters(p);
+    const Lattice L(p);
+    const std::size_t nv = L.size();
+    std::size_t conducting = 0, kept = 0;
+    for (std::size_t i = 0; i < nv; ++i) {
+        conducting += p.sigma[i] > 0.0f;
+        kept += keep[i];
+    }
+    r.conducting_fraction = double(conducting) / double(nv);
+    r.percolating_fraction = double(kept) / double(nv);
+    r.percolates = kept > 0;
+    r.memory_bytes = nv * (sizeof(float) + 1);
+    auto finish = [&] {
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return r;
+    };
+    if (!r.percolates) return finish();
+    if (kept >= std::size_t(std::numeric_limits<int>::max() / 8))
+        throw InputError(fmt::format("conduction: {} unknowns, too many for one solve; coarsen the voxels", kept));
+
+    ConductionSystem sys = assemble(p, L, keep, kept);
+    const int n = sys.n;
+    const int d_axis = L.axis, last = L.n[std::size_t(d_axis)] - 1;
+    std::vector<int>& outer = sys.outer;
+    std::vector<int>& inner = sys.inner;
+    std::vector<double>& values = sys.values;
+    const Eigen::VectorXd &b = sys.b, &guess = sys.guess, &g_in = sys.g_in, &g_out = sys.g_out;
     // The matrix is symmetric: its row-major arrays are also its column-major ones.
     using ColMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
     Eigen::Map<ColMat> A(n, n, int(values.size()), outer.data(), inner.data(), values.data());

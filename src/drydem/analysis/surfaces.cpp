@@ -8,6 +8,19 @@
 
 namespace drydem::analysis {
 
+namespace {
+/// Fibonacci lattice on the unit sphere: m equal-area points (z uniform in [-1, 1], golden angle).
+std::vector<Vec3> fibonacci_sphere(int m) {
+    std::vector<Vec3> unit(static_cast<std::size_t>(m));
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    for (int q = 0; q < m; ++q) {
+        const double z = 1.0 - (2.0 * q + 1.0) / m, rho = std::sqrt(std::max(0.0, 1.0 - z * z));
+        unit[std::size_t(q)] = {rho * std::cos(golden * q), rho * std::sin(golden * q), z};
+    }
+    return unit;
+}
+} // namespace
+
 Surfaces ncm_surfaces(const Structure& s, const SurfaceOptions& o) {
     Surfaces out;
     out.gap = o.cb_gap;
@@ -37,14 +50,8 @@ Surfaces ncm_surfaces(const Structure& s, const SurfaceOptions& o) {
         cell(s.position[i], ix, iy, iz);
         cells[(std::size_t(iz) * ny + iy) * nx + ix].push_back(std::uint32_t(i));
     }
-    // Fibonacci lattice on the unit sphere: equal-area points (z uniform in [-1, 1], golden angle).
     const int m = o.points;
-    std::vector<Vec3> unit(static_cast<std::size_t>(m));
-    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-    for (int q = 0; q < m; ++q) {
-        const double z = 1.0 - (2.0 * q + 1.0) / m, rho = std::sqrt(std::max(0.0, 1.0 - z * z));
-        unit[std::size_t(q)] = {rho * std::cos(golden * q), rho * std::sin(golden * q), z};
-    }
+    const std::vector<Vec3> unit = fibonacci_sphere(m);
     auto wrap = [](double d, double l) { return d - l * std::round(d / l); };
     double total = 0, contact = 0, substrate = 0, overlap = 0, covered = 0, free = 0;
 #pragma omp parallel for schedule(dynamic, 16) reduction(+ : total, contact, substrate, overlap, covered, free)

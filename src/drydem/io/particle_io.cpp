@@ -218,17 +218,20 @@ void read_data(LineReader& in, ParticleFile& out) {
 }
 
 // ---------------------------------------------------------------- LAMMPS dump
-void read_dump(LineReader& in, std::string first, ParticleFile& out) {
-    struct Frame {
-        std::int64_t step = -1;
-        std::size_t natoms = 0;
-        std::array<double, 4> box{}; // xlo xhi ylo yhi
-        bool have_box = false;
-        std::vector<std::string> columns;
-        std::streampos atoms_at{};
-        std::size_t atoms_line = 0;
-    };
-    Frame cur, last;
+/// One frame of a LAMMPS dump: its header items and where its atom lines start.
+struct DumpFrame {
+    std::int64_t step = -1;
+    std::size_t natoms = 0;
+    std::array<double, 4> box{}; // xlo xhi ylo yhi
+    bool have_box = false;
+    std::vector<std::string> columns;
+    std::streampos atoms_at{};
+    std::size_t atoms_line = 0;
+};
+
+/// Reads the items of every frame, skipping the atom lines; returns the last complete frame.
+DumpFrame last_dump_frame(LineReader& in, std::string first) {
+    DumpFrame cur, last;
     bool complete = false;
     std::string line = std::move(first);
     const auto value_line = [&](std::string_view what) {
@@ -278,6 +281,12 @@ void read_dump(LineReader& in, std::string first, ParticleFile& out) {
         }
     } while (in.next(line));
     if (!complete) in.fail("no ITEM: ATOMS section: not a LAMMPS dump?");
+    return last;
+}
+
+void read_dump(LineReader& in, std::string first, ParticleFile& out) {
+    const DumpFrame last = last_dump_frame(in, std::move(first));
+    std::string line;
 
     const auto col = [&](std::initializer_list<std::string_view> names) -> int {
         for (const auto n : names)
