@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Structure analysis against closed forms (issue 5): sphere-slab volumes, profiles and porosity of
 // single spheres and of SC / FCC lattices, masses and density, coordination numbers, voxelization.
+#include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/analysis/bulk.hpp"
 #include "drydem/analysis/coordination.hpp"
 #include "drydem/analysis/profiles.hpp"
@@ -234,8 +235,8 @@ TEST(AnalysisInput, CsvAndLammpsDumpGiveTheSameStructure) {
         box.lx = box.ly = 20e-6;
         append_lammps_dump(dump, p, box, 100, 12e-6);
     }
-    const Structure a = structure_from_file(read_particles(dir / "final.csv"), c);
-    const Structure b = structure_from_file(read_particles(dir / "dump.lammpstrj"), c);
+    const Structure a = structure_from_file(read_particles(dir / "final.csv"), file_defaults(c));
+    const Structure b = structure_from_file(read_particles(dir / "dump.lammpstrj"), file_defaults(c));
     ASSERT_EQ(a.size(), 22u);
     ASSERT_EQ(b.size(), 22u);
     EXPECT_DOUBLE_EQ(b.box.lx, 20e-6);
@@ -254,10 +255,10 @@ TEST(AnalysisInput, CsvAndLammpsDumpGiveTheSameStructure) {
     // Type 7 is not in a 5-class config; --cb-type makes it CB and every other type NCM.
     p.add(99, 6, 1e-6, 1000.0, {1e-6, 1e-6, 1e-6});
     write_particles_csv(dir / "bad.csv", p);
-    EXPECT_THROW((void)structure_from_file(read_particles(dir / "bad.csv"), c), InputError);
+    EXPECT_THROW((void)structure_from_file(read_particles(dir / "bad.csv"), file_defaults(c)), InputError);
     PhaseRule rule;
     rule.cb_type = 7;
-    const Structure d = structure_from_file(read_particles(dir / "bad.csv"), c, rule);
+    const Structure d = structure_from_file(read_particles(dir / "bad.csv"), file_defaults(c), rule);
     std::size_t cb7 = 0;
     for (auto ph : d.phase) cb7 += ph == Phase::cb;
     EXPECT_EQ(cb7, 1u);

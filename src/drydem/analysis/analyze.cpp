@@ -44,15 +44,6 @@ std::vector<double> diameter_histogram(const VoxelGrid& g, const std::vector<std
 
 } // namespace
 
-void set_transport_options(AnalysisOptions& o, const Config& c) {
-    o.transport.voxels = c.analysis_transport_voxel_sizes;
-    o.transport.sigma_ncm = c.analysis_ncm_conductivity;
-    o.transport.sigma_cb = c.analysis_cb_conductivity;
-    o.surfaces.points = c.analysis_surface_points;
-    o.surfaces.cb_gap = c.analysis_cb_coverage_gap;
-    o.binder.diffusivity = c.analysis_binder_diffusivity;
-}
-
 namespace {
 
 /// Binder migration (paper Eq. 1) over the run's drying history, and the same film dried faster.

@@ -81,10 +81,6 @@ struct AnalysisResult {
     std::vector<double> seconds;       ///< voxelize, EDT, chords, local thickness, intrusion
 };
 
-/// The transport and surface options of a config (analysis.transport_voxel_sizes, *_conductivity,
-/// surface_points, cb_coverage_gap) into `o`.
-void set_transport_options(AnalysisOptions& o, const Config& c);
-
 [[nodiscard]] AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o);
 
 } // namespace drydem::analysis

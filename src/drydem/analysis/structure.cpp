@@ -19,24 +19,12 @@ void Structure::add(const Vec3& x, double r, Phase ph, double rho) {
     density.push_back(rho);
 }
 
-Formulation formulation_of(const Config& c) {
-    Formulation f;
-    f.ncm_density = c.ncm_density;
-    f.cb_density = c.cb_density;
-    f.cb_porosity = c.cb_porosity;
-    f.pvdf_density = c.pvdf_density;
-    f.ncm_mass_fraction = c.ncm_mass_fraction;
-    f.cb_mass_fraction = c.cb_mass_fraction;
-    f.pvdf_mass_fraction = c.pvdf_mass_fraction;
-    return f;
-}
-
-Structure structure_from_file(const ParticleFile& file, const Config& c, const PhaseRule& rule) {
+Structure structure_from_file(const ParticleFile& file, const FileDefaults& d, const PhaseRule& rule) {
     Structure s;
-    s.formulation = formulation_of(c);
-    s.box.lx = file.lx.value_or(c.box_x);
-    s.box.ly = file.ly.value_or(c.box_y);
-    const int n_ncm = int(c.ncm_diameters.size());
+    s.formulation = d.formulation;
+    s.box.lx = file.lx.value_or(d.box_x);
+    s.box.ly = file.ly.value_or(d.box_y);
+    const int n_ncm = d.ncm_classes;
     const int cb_type = rule.cb_type.value_or(n_ncm + 1);
     for (const ParticleRecord& r : file.particles) {
         if (!rule.cb_type && (r.type < 1 || r.type > n_ncm + 1))
@@ -52,7 +40,7 @@ Structure structure_from_file(const ParticleFile& file, const Config& c, const P
         x.y -= file.ylo.value_or(0.0);
         s.box.wrap(x);
         const Phase ph = r.type == cb_type ? Phase::cb : Phase::ncm;
-        s.add(x, r.radius, ph, std::isnan(r.density) ? c.ncm_density : r.density);
+        s.add(x, r.radius, ph, std::isnan(r.density) ? d.formulation.ncm_density : r.density);
     }
     if (s.size() == 0) throw InputError("the particle file has no particles");
     return s;

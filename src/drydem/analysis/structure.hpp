@@ -5,7 +5,6 @@
 #pragma once
 #include "drydem/core/box.hpp"
 #include "drydem/core/vec3.hpp"
-#include "drydem/io/config.hpp"
 #include "drydem/io/particle_io.hpp"
 #include <cstdint>
 #include <optional>
@@ -43,12 +42,19 @@ struct PhaseRule {
     std::optional<int> cb_type;
 };
 
-/// The structure of a particle file. The periodic box is the file's where it has one, else the
-/// config's (film.box_x, film.box_y); formulation constants from the config. Particles are wrapped
-/// into the box. InputError for a type the rule does not know or a particle outside the base.
-[[nodiscard]] Structure structure_from_file(const ParticleFile& file, const Config& c,
-                                            const PhaseRule& rule = {});
+/// What a particle file may leave out: the formulation, the periodic box and the number of NCM
+/// size classes (types 1..n NCM, n + 1 CB by default). drying/analysis_inputs.hpp fills it from a
+/// config; the analysis itself never reads one.
+struct FileDefaults {
+    Formulation formulation;
+    double box_x = 0.0, box_y = 0.0; ///< [m]
+    int ncm_classes = 1;
+};
 
-[[nodiscard]] Formulation formulation_of(const Config& c);
+/// The structure of a particle file. The periodic box is the file's where it has one, else the
+/// defaults'; a particle without a density gets the NCM density. Particles are wrapped into the
+/// box. InputError for a type the rule does not know or a particle outside the base.
+[[nodiscard]] Structure structure_from_file(const ParticleFile& file, const FileDefaults& d,
+                                            const PhaseRule& rule = {});
 
 } // namespace drydem::analysis

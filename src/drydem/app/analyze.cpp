@@ -2,6 +2,7 @@
 // `drydem analyze SNAPSHOT`: the structure analysis of a particle file (ours, the peers' CSV, a
 // LAMMPS/LIGGGHTS data or dump file) into analysis.json, profiles.csv, psd_*.csv, plots and, on
 // request, the voxel image.
+#include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/app/commands.hpp"
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/core/error.hpp"
@@ -36,7 +37,7 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
     check_particle_geometry(file, file.lx.value_or(c.box_x), file.ly.value_or(c.box_y), o.snapshot);
     analysis::PhaseRule rule;
     if (o.cb_type > 0) rule.cb_type = o.cb_type;
-    const analysis::Structure s = analysis::structure_from_file(file, c, rule);
+    const analysis::Structure s = analysis::structure_from_file(file, file_defaults(c), rule);
     analysis::AnalysisOptions a = o.analysis;
     // A run folder's snapshot: its time series drives the binder migration model.
     if (const fs::path ts = o.snapshot.parent_path() / "timeseries.csv"; a.timeseries.empty() && o.snapshot.filename() == "final.csv" && fs::exists(ts))

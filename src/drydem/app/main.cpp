@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `drydem` command line (interface.md): run, check, dryer, analyze, study, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
+#include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
@@ -222,7 +223,7 @@ int main(int argc, char** argv) {
             an.analysis.profile_dz = an_dz.empty() ? c.analysis_profile_dz : length(an_dz, "--dz");
             an.analysis.contact_gap = an_gap.empty() ? c.analysis_contact_gap : length(an_gap, "--contact-gap");
             an.analysis.pore_top = an_pore_top.empty() ? c.analysis_pore_top : an_pore_top;
-            analysis::set_transport_options(an.analysis, c);
+            set_transport_options(an.analysis, c);
             if (an.analysis.voxel < 0.0) throw InputError(fmt::format("--voxel {}: must be positive (0 = none)", an_voxel));
             if (!(an.analysis.profile_dz > 0.0)) throw InputError(fmt::format("--dz {}: must be positive", an_dz));
             if (an.analysis.contact_gap < 0.0) throw InputError(fmt::format("--contact-gap {}: must be >= 0", an_gap));

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/drying/run_summary.hpp"
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/drying/film_measures.hpp"
@@ -52,10 +53,10 @@ private:
         ao.profile_dz = c.analysis_profile_dz;
         ao.contact_gap = c.analysis_contact_gap;
         ao.pore_top = c.analysis_pore_top;
-        analysis::set_transport_options(ao, c);
+        set_transport_options(ao, c);
         ao.timeseries = (dir / "timeseries.csv").string();
         ao.log = [this](const std::string& m) { ctx_.log.info("analysis: {}", m); };
-        const analysis::Structure st = analysis::structure_from_file(read_particles(dir / "final.csv"), c);
+        const analysis::Structure st = analysis::structure_from_file(read_particles(dir / "final.csv"), file_defaults(c));
         const analysis::AnalysisResult ar = analysis::analyze_structure(st, ao);
         write_analysis(dir / "analysis", ar, ao, "final.csv");
         json add;

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/drying/analysis_inputs.hpp"
+
+namespace drydem {
+
+analysis::Formulation analysis_formulation(const Config& c) {
+    analysis::Formulation f;
+    f.ncm_density = c.ncm_density;
+    f.cb_density = c.cb_density;
+    f.cb_porosity = c.cb_porosity;
+    f.pvdf_density = c.pvdf_density;
+    f.ncm_mass_fraction = c.ncm_mass_fraction;
+    f.cb_mass_fraction = c.cb_mass_fraction;
+    f.pvdf_mass_fraction = c.pvdf_mass_fraction;
+    return f;
+}
+
+analysis::FileDefaults file_defaults(const Config& c) {
+    return {analysis_formulation(c), c.box_x, c.box_y, int(c.ncm_diameters.size())};
+}
+
+void set_transport_options(analysis::AnalysisOptions& o, const Config& c) {
+    o.transport.voxels = c.analysis_transport_voxel_sizes;
+    o.transport.sigma_ncm = c.analysis_ncm_conductivity;
+    o.transport.sigma_cb = c.analysis_cb_conductivity;
+    o.surfaces.points = c.analysis_surface_points;
+    o.surfaces.cb_gap = c.analysis_cb_coverage_gap;
+    o.binder.diffusivity = c.analysis_binder_diffusivity;
+}
+
+} // namespace drydem
