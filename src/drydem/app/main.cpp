@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `drydem` command line (interface.md): run, check, dryer, analyze, study, config, bench. Exit codes: 0 success,
+// `drydem` command line (interface.md): run, check, dryer, analyze, study, calibrate, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
@@ -133,6 +133,29 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     study->add_flag("--quiet", study_opt.quiet, "only the final table");
     study->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
+    std::string scheduler;
+    study->add_option("--scheduler", scheduler,
+                      "where the runs run: local (child processes) or slurm (a job array; = --set "
+                      "scheduler.type=...)")
+        ->check(CLI::IsMember({"local", "slurm"}));
+
+    app::CalibrateOptions cal_opt;
+    auto* calibrate = cli.add_subcommand("calibrate", "fit config parameters to measured targets ([calibration]; "
+                                                      "docs/calibration.md): evaluations.csv, calibrated.toml, plots");
+    calibrate->add_option("config", config_file, "TOML configuration with a [calibration] section")
+        ->required()->check(CLI::ExistingFile);
+    calibrate->add_option("-o,--output", out_dir, "output folder (default out/<name>-calibrate-<timestamp>)");
+    calibrate->add_option("--set", sets, "override a key")->take_all();
+    calibrate->add_option("--jobs", cal_opt.jobs, "local: runs at a time; slurm: evaluations per job array (default 1)")
+        ->check(CLI::PositiveNumber);
+    calibrate->add_option("--threads", cal_opt.threads, "threads per local run (default cores / jobs)")
+        ->check(CLI::PositiveNumber);
+    calibrate->add_flag("--resume", cal_opt.resume,
+                        "continue the calibration in -o DIR where it stopped (finished evaluations are kept)");
+    calibrate->add_option("--scheduler", scheduler, "local or slurm (= --set scheduler.type=...)")
+        ->check(CLI::IsMember({"local", "slurm"}));
+    calibrate->add_flag("--quiet", cal_opt.quiet, "only warnings and the result");
+    calibrate->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
 
     app::AnalyzeOptions an;
     std::string an_voxel, an_dz, an_gap, an_config, an_pore_top;
@@ -192,7 +215,9 @@ int main(int argc, char** argv) {
             stop_after = std::int64_t(cli_integer("--stop-after-steps", stop_after_text,
                                                   std::numeric_limits<std::int64_t>::max(),
                                                   "a step count 0..9223372036854775807"));
-        for (const int n : {study_opt.threads, an.threads, bench_opt.threads}) check_threads("--threads", n);
+        for (const int n : {study_opt.threads, an.threads, bench_opt.threads, cal_opt.threads})
+            check_threads("--threads", n);
+        if (!scheduler.empty()) sets.push_back("scheduler.type=\"" + scheduler + "\"");
         if (seed && resume_dir.empty()) sets.push_back(fmt::format("run.seed={}", *seed));
         if (threads && resume_dir.empty()) sets.push_back(fmt::format("run.threads={}", *threads));
         if (*config) {
@@ -234,6 +259,14 @@ int main(int argc, char** argv) {
             if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c); // rates as the run uses them
             app::print_check(c);
             return 0;
+        }
+        if (*calibrate) {
+            const Config c = load(config_file, sets);
+            if (cal_opt.resume && out_dir.empty())
+                throw InputError("--resume needs -o DIR, the folder of the calibration to continue");
+            cal_opt.output_dir = out_dir.empty() ? default_output_dir(c, "-calibrate") : out_dir;
+            cal_opt.plots = !no_plots;
+            return app::run_calibrate(c, cal_opt);
         }
         if (*study) {
             const Config c = load(config_file, sets);

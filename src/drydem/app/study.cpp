@@ -8,6 +8,7 @@
 #include "drydem/io/particle_io.hpp"
 #include "drydem/study/study.hpp"
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -24,7 +25,6 @@
 extern char** environ;
 
 namespace drydem::app {
-namespace {
 
 std::string self_executable() {
     std::error_code ec;
@@ -32,6 +32,8 @@ std::string self_executable() {
     if (ec) throw RunError(fmt::format("cannot locate the drydem executable: {}", ec.message()));
     return p.string();
 }
+
+namespace {
 
 pid_t spawn(const std::vector<std::string>& args, const std::filesystem::path& console_log) {
     posix_spawn_file_actions_t fa;
@@ -98,6 +100,47 @@ int run_study(const Config& base, const StudyOptions& o) {
         running[spawn(args, dir / "console.txt")] = k;
         say(fmt::format("started {} ({:.2f} mg/cm2, seed {})", c.name, c.areal_loading * 100.0, c.seed));
     };
+    if (base.scheduler == "slurm") {
+        // One Slurm job array, one run per task (scripts/slurm_array.py: threads from
+        // SLURM_CPUS_PER_TASK, a task stopped at its time limit resubmitted and resumed).
+        nlohmann::json spec = {{"drydem", exe}, {"work", fs::absolute(o.output_dir).string()}, {"name", base.name},
+                               {"plots", o.plots},
+                               {"scheduler", {{"partition", base.slurm_partition},
+                                              {"time_limit_s", base.slurm_time_limit},
+                                              {"cpus_per_task", base.slurm_cpus_per_task},
+                                              {"resubmits", base.slurm_resubmits}}}};
+        spec["tasks"] = nlohmann::json::array();
+        for (const StudyCase& c : cases) {
+            const fs::path dir = fs::absolute(o.output_dir / "runs" / c.name);
+            spec["tasks"].push_back({{"dir", dir.string()},
+                                     {"args", {"run", fs::absolute(config_file).string(), "-o", dir.string(),
+                                               "--set", fmt::format("film.areal_loading={:.17g}", c.areal_loading),
+                                               "--set", fmt::format("run.seed={}", c.seed),
+                                               "--set", fmt::format("run.name=\"{}-{}\"", base.name, c.name)}}});
+        }
+        const fs::path tasks_file = o.output_dir / "slurm_tasks.json";
+        write_file_atomically(tasks_file, [&](std::ostream& os) { os << spec.dump(1) << "\n"; });
+        const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "slurm_array.py";
+        say(fmt::format("slurm: {} runs as one job array, {} cpu(s) per task", cases.size(), base.slurm_cpus_per_task));
+        const pid_t pid = spawn({"/usr/bin/python3", script.string(), tasks_file.string()}, o.output_dir / "slurm.txt");
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0) {
+            if (errno != EINTR) throw RunError(fmt::format("waitpid failed: {}", std::strerror(errno)));
+            if (stop_requested()) kill(pid, SIGTERM); // cancels the job array
+        }
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            throw RunError(fmt::format("the Slurm submission failed (see {})", (o.output_dir / "slurm.txt").string()));
+        for (std::size_t k = 0; k < cases.size(); ++k) {
+            rows[k] = read_study_row(cases[k], o.output_dir / "runs" / cases[k].name, -1);
+            const StudyRow& r = rows[k];
+            say(r.status == "completed"
+                    ? fmt::format("[{}/{}] {} completed: thickness {:.3f} um, density {:.4f} g/cm3, porosity {:.4f}",
+                                  k + 1, cases.size(), r.c.name, *r.thickness_um, r.density_g_cm3.value_or(NAN),
+                                  r.porosity.value_or(NAN))
+                    : fmt::format("[{}/{}] {} FAILED: {}", k + 1, cases.size(), r.c.name, r.error));
+        }
+        finished = next = cases.size();
+    }
     while (finished < cases.size()) {
         while (!stopping && running.size() < std::size_t(jobs) && next < cases.size()) start_case(next++);
         if (running.empty()) break;
