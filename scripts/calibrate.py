@@ -52,6 +52,26 @@ def on_signal(sig, frame):
             p.send_signal(signal.SIGTERM)  # the run finishes its step, writes a checkpoint, exits
 
 
+def wait_for_folder(run_dir, timeout=300.0):
+    """A run of a killed driver may still be writing its checkpoint (it got SIGTERM when the
+    driver died): wait until it has let go of its folder's lock before continuing the folder."""
+    import fcntl
+    lock = os.path.join(run_dir, ".drydem.lock")
+    if not os.path.exists(lock):
+        return
+    end = time.time() + timeout
+    with open(lock, "a") as f:
+        while True:
+            try:
+                fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                fcntl.flock(f, fcntl.LOCK_UN)
+                return
+            except BlockingIOError:
+                if time.time() > end:
+                    return  # drydem run then refuses the folder and names the process holding it
+                time.sleep(0.5)
+
+
 def parent_death_signal():
     """A run gets SIGTERM when the driver dies (also on SIGKILL): it checkpoints and stops, and a
     resumed calibration continues it instead of finding it still running."""
@@ -137,6 +157,7 @@ class Calibration:
         while (queue or CHILDREN) and not STOP["signal"]:
             while queue and len(CHILDREN) < jobs and not STOP["signal"]:
                 t = queue.pop(0)
+                wait_for_folder(t["dir"])
                 cmd = slurm_array.run_args(self.spec["drydem"], t, self.args.threads)
                 name = os.path.basename(t["dir"])
                 console = open(os.path.join(self.dir, "logs", name + ".txt"), "a")
@@ -218,6 +239,8 @@ class Calibration:
         self.say(f"  {os.path.basename(t['dir'])}: {state}"
                  + ("" if state != "completed" else ": " + ", ".join(f"{k} {v:.5g}" for k, v in values.items()))
                  + (f" ({error})" if error and state != "completed" else ""))
+        if ev["status"] == "pending":
+            self.finish_evaluation(ev)  # an evaluation is done as soon as its last run is
 
     def finish_evaluation(self, ev):
         runs = [ev["runs"].get(str(s)) for s in self.seeds()]
@@ -357,9 +380,7 @@ class Calibration:
                 self.run_slurm(tasks)
             else:
                 self.run_local(tasks)
-            progressed = False
-            for e in pending:
-                progressed |= self.finish_evaluation(e)
+            progressed = any(e["status"] != "pending" for e in pending)
             if not progressed and not STOP["signal"]:
                 raise SystemExit("error: runs were stopped and not continued; run drydem calibrate --resume again")
             self.write_tables()

@@ -109,8 +109,11 @@ class Submitter:
             todo = [t for t in tasks if run_state(t["dir"]) not in ("completed", "failed")]
             if not todo:
                 return
-            self.rounds += 1
-            rdir = os.path.join(self.work, "slurm", f"round_{self.rounds:03d}")
+            # rounds numbered on from those in the folder (a calibration submits many)
+            base = os.path.join(self.work, "slurm")
+            os.makedirs(base, exist_ok=True)
+            self.rounds = 1 + sum(1 for n in os.listdir(base) if n.startswith("round_"))
+            rdir = os.path.join(base, f"round_{self.rounds:03d}")
             os.makedirs(rdir, exist_ok=True)
             for k, t in enumerate(todo):
                 os.makedirs(t["dir"], exist_ok=True)
