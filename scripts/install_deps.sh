@@ -7,6 +7,8 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev libtiff-dev libeigen3-dev
   python3-matplotlib python3-vtk9 python3-numpy python3-pil time universal-ctags
+  python3-scipy python3-sklearn   # drydem calibrate: qmc start, Gaussian-process surrogate
+  slurm-wlm munge                 # --scheduler slurm; the test starts its own one-node cluster
 )
 # The peer benchmark (bench/peer_bench.sh) also needs LIGGGHTS and LAMMPS: pass --peers.
 if [[ "${1:-}" == "--peers" ]]; then packages+=(liggghts lammps openmpi-bin); fi

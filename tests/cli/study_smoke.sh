@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `drydem study` with one loading that runs and one that cannot (a film thinner than its largest
 # particle: set-up error, exit 2): the study records the failure, finishes the other run, writes
-# study.csv / study.json and the Fig. 6 plot, and exits 1 because not every run completed.
+# study.csv / study.json and the Fig. 6 plot, and exits 1 because not every run completed. Then
+# --resume: a completed case is kept, a stopped one continues from its checkpoint.
 # usage: study_smoke.sh DRYDEM CONFIG WORKDIR
 set -u
 drydem=$1 config=$2 work=$3
@@ -36,4 +37,21 @@ for f in files:
     assert im.format == 'PNG' and im.size[0] >= 500 and im.size[1] >= 300, (f, im.format, im.size)
 print('plots ok:', len(files))
 PY
+# --resume (local): a completed case is kept as it is, a stopped one continues from its checkpoint.
+before=$(stat -c %Y "$run/summary.json")
+"$drydem" study "$config" --loadings 1.5 --seeds 1 --threads 1 -o "$work" --resume --no-plots --quiet
+[[ $? -eq 0 && $(stat -c %Y "$run/summary.json") == "$before" ]] || { echo "resume re-ran a completed case"; exit 1; }
+grep -q "started L1.50" <(tail -3 "$work/log.txt") && { echo "resume started a completed case again"; exit 1; }
+second="$work-resume"
+rm -rf "$second"
+"$drydem" run "$config" -o "$second/runs/L1.50_s12345" --set film.areal_loading=0.015 --set run.seed=12345 \
+  --set 'run.name="tiny-L1.50_s12345"' --threads 1 --stop-after-steps 300 --quiet --no-plots
+[[ -s "$second/runs/L1.50_s12345/checkpoint/state.bin" ]] || { echo "the stopped run has no checkpoint"; exit 1; }
+"$drydem" study "$config" --loadings 1.5 --seeds 1 --threads 1 -o "$second" --no-plots --quiet 2>/dev/null
+[[ $? -eq 2 ]] || { echo "a study into a folder with runs but without --resume should be refused"; exit 1; }
+"$drydem" study "$config" --loadings 1.5 --seeds 1 --threads 1 -o "$second" --resume --no-plots --quiet
+[[ $? -eq 0 ]] || { echo "the resumed study failed"; exit 1; }
+grep -q "resumed L1.50_s12345" "$second/log.txt" || { echo "the stopped case was not resumed"; exit 1; }
+grep -q "resumed from the checkpoint" "$second/runs/L1.50_s12345/log.txt" || { echo "the run did not resume"; exit 1; }
+grep -q '^1.5,12345,completed,' "$second/study.csv" || { echo "the resumed case is not completed"; exit 1; }
 echo "study smoke test passed"

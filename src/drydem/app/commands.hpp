@@ -32,8 +32,22 @@ struct StudyOptions {
     int threads = 0;              ///< per run; 0: cores / runs, at least 1
     int jobs = 0;                 ///< runs at a time; 0: cores / threads
     bool quiet = false, plots = true;
+    bool resume = false;          ///< continue a stopped study in output_dir (its finished runs kept)
 };
 int run_study(const Config& base, const StudyOptions& o);
+
+/// `drydem calibrate`: checks [calibration], prepares DIR (config.toml, calibration.json) and
+/// replaces itself with the search driver scripts/calibrate.py (docs/calibration.md).
+struct CalibrateOptions {
+    std::filesystem::path output_dir;
+    int jobs = 1;     ///< local: runs at a time; slurm: evaluations per job array
+    int threads = 0;  ///< per local run; 0: cores / jobs, at least 1
+    bool resume = false, quiet = false, plots = true;
+};
+int run_calibrate(const Config& c, const CalibrateOptions& o);
+
+/// The path of the running drydem executable (/proc/self/exe).
+std::string self_executable();
 
 /// `drydem dryer`: the dryer model alone; writes dryer.json, dryer.csv and plots/dryer.png.
 struct DryerOptions {

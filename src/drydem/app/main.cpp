@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `drydem` command line (interface.md): run, check, dryer, analyze, study, config, bench. Exit codes: 0 success,
+// `drydem` command line (interface.md): run, check, dryer, analyze, study, calibrate, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
 #include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/app/commands.hpp"
@@ -136,6 +136,32 @@ int main(int argc, char** argv) {
     study->add_flag("--quiet", study_opt.quiet, "only the final table");
     study->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
     study->add_flag("--overwrite", overwrite, "replace a previous study's outputs (its runs included) in the -o folder");
+    study->add_flag("--resume", study_opt.resume,
+                    "continue the stopped study in -o DIR: completed runs are kept, stopped ones continue "
+                    "from their checkpoints, the rest start");
+    std::string scheduler;
+    study->add_option("--scheduler", scheduler,
+                      "where the runs run: local (child processes) or slurm (a job array; = --set "
+                      "scheduler.type=...)")
+        ->check(CLI::IsMember({"local", "slurm"}));
+
+    app::CalibrateOptions cal_opt;
+    auto* calibrate = cli.add_subcommand("calibrate", "fit config parameters to measured targets ([calibration]; "
+                                                      "docs/calibration.md): evaluations.csv, calibrated.toml, plots");
+    calibrate->add_option("config", config_file, "TOML configuration with a [calibration] section")
+        ->required()->check(CLI::ExistingFile);
+    calibrate->add_option("-o,--output", out_dir, "output folder (default out/<name>-calibrate-<timestamp>)");
+    calibrate->add_option("--set", sets, "override a key")->take_all();
+    calibrate->add_option("--jobs", cal_opt.jobs, "local: runs at a time; slurm: evaluations per job array (default 1)")
+        ->check(CLI::PositiveNumber);
+    calibrate->add_option("--threads", cal_opt.threads, "threads per local run (default cores / jobs)")
+        ->check(CLI::PositiveNumber);
+    calibrate->add_flag("--resume", cal_opt.resume,
+                        "continue the calibration in -o DIR where it stopped (finished evaluations are kept)");
+    calibrate->add_option("--scheduler", scheduler, "local or slurm (= --set scheduler.type=...)")
+        ->check(CLI::IsMember({"local", "slurm"}));
+    calibrate->add_flag("--quiet", cal_opt.quiet, "only warnings and the result");
+    calibrate->add_flag("--no-plots", no_plots, "skip the matplotlib plots");
 
     app::AnalyzeOptions an;
     std::string an_voxel, an_dz, an_gap, an_config, an_pore_top;
@@ -196,7 +222,9 @@ int main(int argc, char** argv) {
             stop_after = std::int64_t(cli_integer("--stop-after-steps", stop_after_text,
                                                   std::numeric_limits<std::int64_t>::max(),
                                                   "a step count 0..9223372036854775807"));
-        for (const int n : {study_opt.threads, an.threads, bench_opt.threads}) check_threads("--threads", n);
+        for (const int n : {study_opt.threads, an.threads, bench_opt.threads, cal_opt.threads})
+            check_threads("--threads", n);
+        if (!scheduler.empty()) sets.push_back("scheduler.type=\"" + scheduler + "\"");
         if (seed && resume_dir.empty()) sets.push_back(fmt::format("run.seed={}", *seed));
         if (threads && resume_dir.empty()) sets.push_back(fmt::format("run.threads={}", *threads));
         if (*config) {
@@ -241,6 +269,14 @@ int main(int argc, char** argv) {
             app::print_check(c);
             return 0;
         }
+        if (*calibrate) {
+            const Config c = load(config_file, sets);
+            if (cal_opt.resume && out_dir.empty())
+                throw InputError("--resume needs -o DIR, the folder of the calibration to continue");
+            cal_opt.output_dir = out_dir.empty() ? default_output_dir(c, "-calibrate") : out_dir;
+            cal_opt.plots = !no_plots;
+            return app::run_calibrate(c, cal_opt);
+        }
         if (*study) {
             const Config c = load(config_file, sets);
             study_opt.output_dir = out_dir.empty() ? default_output_dir(c) + "-study" : out_dir;
@@ -257,7 +293,8 @@ int main(int argc, char** argv) {
                 study_opt.loadings.push_back(parse_quantity(item, Dimension::areal_density, "--loadings"));
             }
             const OutputLock lock(study_opt.output_dir);
-            prepare_output_folder(study_opt.output_dir, study_output(), overwrite);
+            if (study_opt.resume && overwrite) throw InputError("study: --resume and --overwrite exclude each other");
+            if (!study_opt.resume) prepare_output_folder(study_opt.output_dir, study_output(), overwrite);
             return app::run_study(c, study_opt);
         }
         if (*dryer) {

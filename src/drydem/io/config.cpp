@@ -6,6 +6,7 @@
 #include "drydem/io/units.hpp"
 #include "drydem/setup/derived_checks.hpp"
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
@@ -141,6 +142,16 @@ const std::vector<Field>& schema() {
         {"study.measured_thickness_std", &Config::measured_thickness_std, D::length, 0, 1, false, {}, true},
         {"study.measured_density", &Config::measured_density, D::density, 0, inf, true, {}, true},
         {"study.measured_density_std", &Config::measured_density_std, D::density, 0, inf, false, {}, true},
+        {"calibration.seeds", &Config::calibration_seeds, D::dimensionless, 1, 1000},
+        {"calibration.initial_points", &Config::calibration_initial_points, D::dimensionless, 0, 10000},
+        {"calibration.evaluations", &Config::calibration_evaluations, D::dimensionless, 1, 10000},
+        {"calibration.sampler", &Config::calibration_sampler, D::dimensionless, -inf, inf, false,
+         {"sobol", "lhs"}},
+        {"scheduler.type", &Config::scheduler, D::dimensionless, -inf, inf, false, {"local", "slurm"}},
+        {"scheduler.partition", &Config::slurm_partition},
+        {"scheduler.time_limit", &Config::slurm_time_limit, D::time, 0, 366 * 86400.0},
+        {"scheduler.cpus_per_task", &Config::slurm_cpus_per_task, D::dimensionless, 1, 1024},
+        {"scheduler.resubmits", &Config::slurm_resubmits, D::dimensionless, 0, 100},
         {"analysis.at_end", &Config::analysis_at_end},
         {"analysis.voxel_size", &Config::analysis_voxel_size, D::length, 0, 10e-6},
         {"analysis.profile_dz", &Config::analysis_profile_dz, D::length, 0, 1e-3, true},
@@ -294,12 +305,137 @@ void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::str
         f.member);
 }
 
+
+/// The array-of-tables keys of [calibration]: each entry a table with exactly the keys listed.
+const toml::table& calibration_entry(const toml::node& e, const std::string& label,
+                                     std::initializer_list<std::string_view> allowed,
+                                     std::initializer_list<std::string_view> required) {
+    const toml::table* t = e.as_table();
+    if (!t)
+        throw InputError(fmt::format("config key '{}': {} must be a table with keys {} (e.g. "
+                                     "[[calibration.parameters]] key = \"contact.friction\" min = 0.4 max = 1.2)",
+                                     label, node_text(e), fmt::join(allowed, ", ")));
+    for (const auto& [k, v] : *t)
+        if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
+            throw InputError(fmt::format("unknown config key '{}.{}' (value {}); allowed in this table: {}", label,
+                                         k.str(), node_text(v), fmt::join(allowed, ", ")));
+    for (std::string_view r : required)
+        if (!t->contains(r))
+            throw InputError(fmt::format("config key '{}': missing '{}' (a table needs {})", label, r,
+                                         fmt::join(required, ", ")));
+    return *t;
+}
+
+/// [[calibration.parameters]]: key (a numeric config key), min, max (in that key's unit and range),
+/// scale ("linear" | "log").
+void parse_calibration_parameters(const toml::node& n, Config& c) {
+    const toml::array* arr = n.as_array();
+    if (!arr)
+        throw InputError(fmt::format("config key 'calibration.parameters': {} must be an array of tables "
+                                     "([[calibration.parameters]])", node_text(n)));
+    c.calibration_parameters.clear();
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+        const std::string label = fmt::format("calibration.parameters[{}]", i + 1);
+        const toml::table& t = calibration_entry((*arr)[i], label, {"key", "min", "max", "scale"}, {"key", "min", "max"});
+        const auto key = t["key"].value<std::string>();
+        if (!key) throw InputError(fmt::format("config key '{}.key': {} must be a string naming a config key",
+                                               label, node_text(*t.get("key"))));
+        const auto& fields = schema();
+        auto it = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.key == *key; });
+        if (it == fields.end())
+            throw InputError(fmt::format("config key '{}.key': \"{}\" is not a config key; did you mean '{}'? "
+                                         "(`drydem config default` lists every key)", label, *key, nearest_key(*key)));
+        if (!std::holds_alternative<double Config::*>(it->member) || key->starts_with("calibration.") ||
+            key->starts_with("scheduler.") || key->starts_with("study.") || key->starts_with("output."))
+            throw InputError(fmt::format("config key '{}.key': \"{}\" cannot be calibrated; allowed: a single "
+                                         "numeric key of the model (not an integer, string, list, or a "
+                                         "[study], [output], [scheduler] or [calibration] key)", label, *key));
+        for (const CalibrationParameter& p : c.calibration_parameters)
+            if (p.key == *key)
+                throw InputError(fmt::format("config key '{}.key': \"{}\" is already a calibration parameter; "
+                                             "allowed: each key once", label, *key));
+        CalibrationParameter p;
+        p.key = *key;
+        double bounds[2];
+        int k = 0;
+        for (const char* which : {"min", "max"}) {
+            const std::string bl = fmt::format("{}.{} ({})", label, which, *key);
+            Field g = *it;
+            g.key = bl;
+            bounds[k] = read_number(*t.get(which), g);
+            check_range(g, bounds[k], node_text(*t.get(which)));
+            ++k;
+        }
+        p.min = bounds[0];
+        p.max = bounds[1];
+        if (!(p.min < p.max))
+            throw InputError(fmt::format("config key '{}': min {} is not below max {}; allowed: min < max", label,
+                                         node_text(*t.get("min")), node_text(*t.get("max"))));
+        if (t.contains("scale")) {
+            const auto scale = t["scale"].value<std::string>();
+            if (!scale || (*scale != "linear" && *scale != "log"))
+                throw InputError(fmt::format("config key '{}.scale': {} is not allowed; allowed: \"linear\", \"log\"",
+                                             label, node_text(*t.get("scale"))));
+            p.log = *scale == "log";
+            if (p.log && !(p.min > 0.0))
+                throw InputError(fmt::format("config key '{}.min': {} with scale = \"log\"; allowed: > 0", label,
+                                             node_text(*t.get("min"))));
+        }
+        c.calibration_parameters.push_back(p);
+    }
+}
+
+/// [[calibration.targets]]: quantity (calibration_quantities()), value, uncertainty (with units).
+void parse_calibration_targets(const toml::node& n, Config& c) {
+    const toml::array* arr = n.as_array();
+    if (!arr)
+        throw InputError(fmt::format("config key 'calibration.targets': {} must be an array of tables "
+                                     "([[calibration.targets]])", node_text(n)));
+    std::string names;
+    for (const auto& q : calibration_quantities()) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", q.name);
+    c.calibration_targets.clear();
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+        const std::string label = fmt::format("calibration.targets[{}]", i + 1);
+        const toml::table& t =
+            calibration_entry((*arr)[i], label, {"quantity", "value", "uncertainty"}, {"quantity", "value", "uncertainty"});
+        const auto name = t["quantity"].value<std::string>();
+        const auto& qs = calibration_quantities();
+        auto q = std::find_if(qs.begin(), qs.end(), [&](const CalibrationQuantity& x) { return name && x.name == *name; });
+        if (q == qs.end())
+            throw InputError(fmt::format("config key '{}.quantity': {} is not allowed; allowed: {}", label,
+                                         node_text(*t.get("quantity")), names));
+        CalibrationTarget target;
+        target.quantity = *name;
+        for (const char* which : {"value", "uncertainty"}) {
+            const std::string bl = fmt::format("{}.{} ({})", label, which, *name);
+            Field g{bl, &Config::time_step, Dimension(q->dimension), which[0] == 'v' ? q->lo : 0.0,
+                    which[0] == 'v' ? q->hi : q->hi - q->lo, true};
+            const toml::node& v = *t.get(which);
+            const double x = read_number(v, g);
+            if (g.dim == D::length && !v.is_string() && x > 1e-3)
+                throw InputError(fmt::format("config key '{}': {} is {:g} m; did you mean \"{} um\"?", bl,
+                                             node_text(v), x, node_text(v)));
+            check_range(g, x, node_text(v));
+            (which[0] == 'v' ? target.value : target.uncertainty) = x;
+        }
+        c.calibration_targets.push_back(target);
+    }
+}
+
 void walk(const toml::table& t, const std::string& prefix, Config& c,
           std::vector<std::string>& bare_lengths) {
     for (const auto& [k, node] : t) {
         const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
         if (auto sub = node.as_table()) {
             walk(*sub, key, c, bare_lengths);
+            continue;
+        }
+        if (key == "calibration.parameters") {
+            parse_calibration_parameters(node, c);
+            continue;
+        }
+        if (key == "calibration.targets") {
+            parse_calibration_targets(node, c);
             continue;
         }
         const auto& fields = schema();
@@ -369,6 +505,23 @@ void check_dryer(const Config& c) {
 
 } // namespace
 
+const std::vector<CalibrationQuantity>& calibration_quantities() {
+    constexpr int L = int(Dimension::length), R = int(Dimension::density), N = int(Dimension::dimensionless),
+                  T = int(Dimension::time);
+    static const std::vector<CalibrationQuantity> q = {
+        {"final_thickness", L, "final_thickness_um", 1e-6, "um", 0.0, 1e-2},
+        {"final_thickness_relaxed", L, "final_thickness_relaxed_um", 1e-6, "um", 0.0, 1e-2},
+        {"thickness_half_solid", L, "thickness_half_solid_um", 1e-6, "um", 0.0, 1e-2},
+        {"density", R, "density_g_cm3", 1e3, "g/cm^3", 0.0, max_density},
+        {"porosity", N, "porosity", 1.0, "", 0.0, 1.0},
+        {"cb_binder_porosity_eq2", N, "cb_binder_porosity_eq2", 1.0, "", 0.0, 1.0},
+        {"process_time_final", T, "process_time_final_s", 1.0, "s", 0.0, 1e6},
+        {"psd_peak", L, "psd_peak_um", 1e-6, "um", 0.0, 1e-3},
+        {"coordination_mean", N, "coordination_mean", 1.0, "", 0.0, 100.0},
+    };
+    return q;
+}
+
 Config load_config(std::string_view toml_text, std::string_view source_name,
                    const std::vector<std::string>& overrides) {
     toml::table root;
@@ -412,6 +565,16 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
                                          "allowed: one per measured loading{}",
                                          key, values->size(), n_measured, optional ? " or none" : ""));
     check_dryer(c);
+    if (c.calibration_initial_points > c.calibration_evaluations)
+        throw InputError(fmt::format("config key 'calibration.initial_points': {} is more than "
+                                     "calibration.evaluations = {}; allowed 0..{}", c.calibration_initial_points,
+                                     c.calibration_evaluations, c.calibration_evaluations));
+    // sbatch --partition: a partition name (letters, digits, '_', '-', '.', ',' for a list).
+    if (c.slurm_partition.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.,") !=
+        std::string::npos)
+        throw InputError(fmt::format("config key 'scheduler.partition': \"{}\" is not allowed; allowed: a "
+                                     "partition name of letters, digits, '_', '-', '.' (',' between names)",
+                                     c.slurm_partition));
     check_derived_quantities(c, bare_lengths);
     return c;
 }

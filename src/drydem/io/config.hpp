@@ -16,6 +16,30 @@ class table;
 
 namespace drydem {
 
+/// One parameter of a calibration (docs/calibration.md): a numeric config key and its bounds [SI].
+struct CalibrationParameter {
+    std::string key;
+    double min = 0.0, max = 0.0;
+    bool log = false; ///< search over log(value) (scale = "log")
+};
+/// One measured target of a calibration: a run's result quantity, its value and uncertainty [SI].
+struct CalibrationTarget {
+    std::string quantity;
+    double value = 0.0, uncertainty = 0.0;
+};
+/// A run result a calibration can fit: its name in [[calibration.targets]], its dimension, the
+/// key in the run's summary.json and that key's unit (value in summary = SI / si_per_unit).
+struct CalibrationQuantity {
+    std::string_view name;
+    int dimension; ///< a drydem::Dimension (io/units.hpp)
+    std::string_view summary_key;
+    double si_per_unit;
+    std::string_view unit;
+    double lo, hi; ///< allowed target values [SI]
+};
+/// Every quantity [[calibration.targets]] accepts.
+const std::vector<CalibrationQuantity>& calibration_quantities();
+
 struct Config {
     // [run]
     std::string name = "lippke2022-20.1mgcm2";
@@ -119,6 +143,22 @@ struct Config {
     std::vector<double> measured_thickness_std;   ///< [m]; empty or one per measured loading
     std::vector<double> measured_density;         ///< [kg/m^3]; empty or one per measured loading
     std::vector<double> measured_density_std;     ///< [kg/m^3]; empty or one per measured loading
+
+    // [calibration] (drydem calibrate; docs/calibration.md). The parameters and targets are arrays
+    // of tables ([[calibration.parameters]], [[calibration.targets]]), not written by to_toml.
+    std::vector<CalibrationParameter> calibration_parameters;
+    std::vector<CalibrationTarget> calibration_targets;
+    int calibration_seeds = 1;           ///< runs per evaluation (seeds run.seed, run.seed + 1, ...)
+    int calibration_initial_points = 0;  ///< space-filling start; 0 = max(4, 2 x parameters)
+    int calibration_evaluations = 20;    ///< evaluations in all, the start included
+    std::string calibration_sampler = "sobol"; ///< "sobol" | "lhs" (SciPy qmc)
+
+    // [scheduler] where drydem study / calibrate run their runs (docs/calibration.md "Slurm")
+    std::string scheduler = "local";     ///< "local" (child processes) | "slurm" (a job array)
+    std::string slurm_partition;         ///< "" = the cluster's default partition
+    double slurm_time_limit = 0.0;       ///< per task [s]; 0 = the partition's default
+    int slurm_cpus_per_task = 1;         ///< threads per run (SLURM_CPUS_PER_TASK)
+    int slurm_resubmits = 3;             ///< a task stopped at its time limit is resubmitted (resumed) up to N times
 
     // [analysis] structure analysis of the final particles (drydem analyze; docs/analysis.md)
     bool analysis_at_end = true;          ///< analyse final.csv at the end of every run

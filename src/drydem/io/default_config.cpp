@@ -129,6 +129,21 @@ stability_guard = "adapt"        # adapt: dt = the guarded step (never above run
                                  # refuse: stop beyond the stability bound; warn: only warn
 sort_every = 10                  # spatial re-sort every N neighbor rebuilds
 
+[calibration]                    # drydem calibrate (docs/calibration.md); parameters and targets as
+                                 # [[calibration.parameters]] key = "contact.friction" min = 0.4 max = 1.2
+                                 # [[calibration.targets]] quantity = "final_thickness" value = "83.8 um" uncertainty = "2 um"
+seeds = 1                        # runs per evaluation (seeds run.seed, run.seed + 1, ...)
+initial_points = 0               # space-filling start (SciPy qmc); 0 = max(4, 2 x parameters)
+evaluations = 20                 # evaluations in all, the start included
+sampler = "sobol"                # "sobol" or "lhs" (Latin hypercube)
+
+[scheduler]                      # where drydem study / calibrate run their runs
+type = "local"                   # "local": child processes (--jobs); "slurm": one Slurm job array per batch
+partition = ""                   # sbatch --partition ("" = the cluster's default)
+time_limit = "0 s"               # sbatch --time per task; 0 = the partition's default
+cpus_per_task = 1                # sbatch --cpus-per-task = threads per run
+resubmits = 3                    # a task stopped at its time limit is resubmitted and resumes, up to N times
+
 [analysis]                       # structure analysis of final.csv at the end of a run (= drydem analyze)
 at_end = true
 voxel_size = "0.1 um"            # voxel edge of the pore analysis; 0 = only thickness, profiles, coordination

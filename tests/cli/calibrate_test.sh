@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# `drydem calibrate` end to end on a tiny case (2 parameters, 4 evaluations), stopped and resumed:
+# the driver is killed (SIGKILL, no warning) once 2 evaluations are done; the run it had started
+# gets SIGTERM from the kernel (parent-death signal) and writes a checkpoint; `--resume` then
+# finishes the calibration without repeating the 2 finished evaluations (their folders are not
+# touched) and writes evaluations.csv, result.json, calibrated.toml (which `drydem check` accepts)
+# and the plots. Also: a second calibration into the folder without --resume is refused.
+# usage: calibrate_test.sh DRYDEM CONFIG WORKDIR
+set -u
+drydem=$1 cfg=$2 work=$3
+rm -rf "$work"
+fail() { echo "FAIL: $*"; tail -30 "$work/cal/log.txt" 2>/dev/null; exit 1; }
+cal="$work/cal"
+mkdir -p "$work"
+"$drydem" calibrate "$cfg" -o "$cal" --jobs 1 --threads 1 --quiet &
+pid=$!
+done_evals() {
+  /usr/bin/python3 -c "import json,sys; print(sum(e['status']=='done' for e in json.load(open(sys.argv[1]))['evaluations']))" \
+    "$cal/ledger.json" 2>/dev/null || echo 0
+}
+for _ in $(seq 600); do
+  [[ $(done_evals) -ge 2 ]] && break
+  kill -0 $pid 2>/dev/null || fail "the calibration ended before 2 evaluations were done"
+  sleep 0.2
+done
+kill -KILL $pid
+wait $pid 2>/dev/null
+n_before=$(done_evals)
+[[ $n_before -eq 2 ]] || fail "$n_before evaluations done when stopped; expected 2"
+stamps() { for d in "$cal"/eval_00[12]_s*; do stat -c '%n %Y %s' "$d/summary.json" "$d/final.csv"; done; }
+before=$(stamps)
+
+# the folder holds a calibration: refused without --resume (exit 2, naming --resume)
+"$drydem" calibrate "$cfg" -o "$cal" --quiet > "$work/refused.txt" 2>&1
+rc=$?
+[[ $rc -eq 2 ]] && grep -q -- '--resume' "$work/refused.txt" || fail "a second calibration into the folder: exit $rc: $(cat "$work/refused.txt")"
+
+"$drydem" calibrate "$cfg" -o "$cal" --resume --jobs 1 --threads 1 --quiet
+rc=$?
+[[ $rc -eq 0 ]] || fail "resumed calibration: exit $rc"
+[[ "$(stamps)" == "$before" ]] || fail "a finished evaluation was run again"
+grep -q "$n_before done before" "$cal/log.txt" || fail "the resumed driver did not start from the ledger"
+# the third run, cut off by the kill, is continued from its checkpoint (or, killed before its
+# first checkpoint, started again in its folder)
+grep -Eq 'start eval_003_s12345: run (--resume|/)' "$cal/log.txt" || fail "the interrupted run was not continued"
+grep -E 'start eval_003_s12345' "$cal/log.txt" | tail -1
+[[ $(ls -d "$cal"/eval_*_s12345 | wc -l) -eq 4 ]] || fail "not 4 evaluation folders"
+/usr/bin/python3 - "$cal" <<'PY' || fail "results"
+import csv, json, sys
+d = sys.argv[1]
+rows = list(csv.DictReader(open(d + '/evaluations.csv')))
+assert [r['evaluation'] for r in rows] == ['1', '2', '3', '4'], rows
+assert all(r['status'] == 'done' for r in rows), rows
+assert [r['kind'] for r in rows] == ['initial'] * 3 + ['expected improvement'], rows
+for r in rows:
+    assert 0.3 <= float(r['contact.friction']) <= 1.2 and 0.6 <= float(r['formulation.cb_porosity']) <= 0.8, r
+    assert 5 < float(r['final_thickness_um']) < 12 and 0.1 < float(r['cb_binder_porosity_eq2']) < 0.9, r
+res = json.load(open(d + '/result.json'))
+best = res['best']
+for k, (lo, hi) in {'contact.friction': (0.3, 1.2), 'formulation.cb_porosity': (0.6, 0.8)}.items():
+    v = best[k]['value']
+    a, b = best[k]['range_delta_chi2_1']
+    assert lo <= a <= b <= hi and lo <= v <= hi, (k, best[k])
+# the best is the evaluation with the least predicted misfit, and calibrated.toml carries it
+ev = [r for r in rows if r['evaluation'] == str(res['best_evaluation'])][0]
+cal = open(d + '/calibrated.toml').read()
+import tomllib
+t = tomllib.loads(cal)
+assert abs(t['contact']['friction'] - float(ev['contact.friction'])) < 1e-9, (t['contact'], ev)
+assert abs(t['formulation']['cb_porosity'] - float(ev['formulation.cb_porosity'])) < 1e-9, (t['formulation'], ev)
+from PIL import Image
+for n in ('surrogate', 'targets'):
+    im = Image.open(f'{d}/plots/{n}.png')
+    assert im.format == 'PNG' and im.size[0] >= 500, (n, im.size)
+print('calibration ok: best', {k: round(v['value'], 4) for k, v in best.items()}, 'chi2', res['best_evaluation_misfit_chi2'])
+PY
+"$drydem" check "$cal/calibrated.toml" > /dev/null || fail "calibrated.toml does not validate"
+echo "calibrate test passed"
