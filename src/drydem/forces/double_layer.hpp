@@ -63,7 +63,7 @@ struct DoubleLayerLaw {
     struct State {};
     static constexpr std::string_view name = "double_layer";
     static double range(const Params& p, double, double) { return p.amplitude != 0.0 ? p.cutoff_gap : 0.0; }
-    static PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance*) {
+    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance*) {
         return double_layer(g, p);
     }
     static PairResistance resistance(const PairGeometry&, const Params&) { return {}; }

@@ -172,7 +172,7 @@ struct HertzMindlinLaw {
     };
     static constexpr std::string_view name = "hertz_mindlin";
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
-    static PairForce force(const PairGeometry& g, const Params& p, State& s, double dt,
+    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State& s, double dt,
                            PairResistance* damping) {
         if (g.gap < 0.0) return hertz_mindlin(g, p, s.spring, dt, damping);
         s.spring = Vec3{};

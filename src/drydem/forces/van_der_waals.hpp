@@ -50,7 +50,7 @@ struct VanDerWaalsLaw {
     struct State {};
     static constexpr std::string_view name = "van_der_waals";
     static double range(const Params& p, double r_i, double r_j) { return van_der_waals_range(p, r_i, r_j); }
-    static PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance*) {
+    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance*) {
         return van_der_waals(g, p);
     }
     static PairResistance resistance(const PairGeometry&, const Params&) { return {}; }
