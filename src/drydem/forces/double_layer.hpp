@@ -63,8 +63,11 @@ struct DoubleLayerLaw {
     struct State {};
     static constexpr std::string_view name = "double_layer";
     static double range(const Params& p, double, double) { return p.amplitude != 0.0 ? p.cutoff_gap : 0.0; }
-    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance*) {
-        return double_layer(g, p);
+    /// Central: only the force, no torques to add.
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State&, double,
+                                                        PairForce& f, PairResistance*) {
+        if (p.amplitude == 0.0 || g.gap > p.cutoff_gap) return;
+        f.force_i += double_layer(g, p).force_i;
     }
     static PairResistance resistance(const PairGeometry&, const Params&) { return {}; }
     /// At the closest approach before the next rebuild (the repulsion stiffens as the gap closes;

@@ -172,11 +172,10 @@ struct HertzMindlinLaw {
     };
     static constexpr std::string_view name = "hertz_mindlin";
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
-    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State& s, double dt,
-                           PairResistance* damping) {
-        if (g.gap < 0.0) return hertz_mindlin(g, p, s.spring, dt, damping);
-        s.spring = Vec3{};
-        return {};
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State& s, double dt,
+                                                        PairForce& f, PairResistance* damping) {
+        if (g.gap < 0.0) f += hertz_mindlin(g, p, s.spring, dt, damping);
+        else s.spring = Vec3{};
     }
     /// γ_n and γ_t (the sticking contact's, an upper bound of the damping it applies).
     static PairResistance resistance(const PairGeometry& g, const Params& p) {
@@ -192,7 +191,9 @@ struct HertzMindlinLaw {
             hertz_mindlin_coefficients(closest.r_eff, -closest.gap, closest.m_eff, p);
         return {co.s_n, co.s_t, 0.0, 0.0, 0.0, 0.0};
     }
-    static bool keeps(const State& s) { return norm2(s.spring) > 0.0; }
+    /// Any component non-zero (three compares: most list slots are pairs out of reach, where the
+    /// pair loop asks this every step).
+    static bool keeps(const State& s) { return s.spring.x != 0.0 || s.spring.y != 0.0 || s.spring.z != 0.0; }
     /// [materials] and [contact] keys (M-2.1): the two species' materials, one friction for
     /// all pairs.
     static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {

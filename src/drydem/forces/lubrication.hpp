@@ -92,10 +92,11 @@ struct LubricationLaw {
     struct State {};
     static constexpr std::string_view name = "lubrication";
     static double range(const Params& p, double r_i, double r_j) { return lubrication_range(p, r_i, r_j); }
-    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance* r) {
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State&, double,
+                                                        PairForce& f, PairResistance* r) {
         const PairResistance lub = lubrication_resistance(g, p);
         if (r) *r += lub;
-        return resistance_force(lub, g.n, g.v_rel, g.omega_i, g.omega_j);
+        f += resistance_force(lub, g.n, g.v_rel, g.omega_i, g.omega_j);
     }
     static PairResistance resistance(const PairGeometry& g, const Params& p) { return lubrication_resistance(g, p); }
     static PairResistance stiffness(const PairGeometry&, const PairGeometry&, const Params&) { return {}; }

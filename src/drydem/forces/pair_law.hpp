@@ -10,9 +10,11 @@
 //                           State{} means "nothing kept"); an empty struct when it keeps nothing
 //   name                    a short name (checkpoint layout, messages)
 //   range(p, r_i, r_j)      the largest surface gap h at which it acts [m]; 0 when it is off
-//   force(g, p, s, dt, R)   its force and torques for the geometry g (pair_geometry.hpp); it
-//                           advances its state s by dt, and when R is given adds the resistance of
-//                           its dissipative part (resistance.hpp pair form) to *R
+//   add_force(g, p, s, dt, f, R)  adds its force and torques for the geometry g
+//                           (pair_geometry.hpp) to f; it advances its state s by dt, and when R is
+//                           given adds the resistance of its dissipative part (resistance.hpp pair
+//                           form) to *R. A law that does not act adds nothing (not zeros: the
+//                           pair loop pays for every addition)
 //   resistance(g, p)        the resistance of its dissipative part at g (zero if conservative):
 //                           the linear map velocities -> forces the force applies
 //   stiffness(closest, now, p)  |dF/dx| of its conservative part for the stability guard, in the
@@ -42,10 +44,10 @@ namespace drydem {
 template <class L>
 concept PairLaw = requires(const typename L::Params& p, typename L::State& s,
                            const typename L::State& cs, const PairGeometry& g, double r, double dt,
-                           PairResistance* res) {
+                           PairForce& f, PairResistance* res) {
     { L::name } -> std::convertible_to<std::string_view>;
     { L::range(p, r, r) } -> std::same_as<double>;
-    { L::force(g, p, s, dt, res) } -> std::same_as<PairForce>;
+    { L::add_force(g, p, s, dt, f, res) } -> std::same_as<void>;
     { L::resistance(g, p) } -> std::same_as<PairResistance>;
     { L::stiffness(g, g, p) } -> std::same_as<PairResistance>;
     { L::keeps(cs) } -> std::same_as<bool>;
@@ -63,10 +65,20 @@ struct LawStates<L, Rest...> {
     [[no_unique_address]] LawStates<Rest...> rest{};
 };
 
+/// The parameters of a list of laws for one species pair, in list order (the first law's, the
+/// contact's, at the start of the entry, where the pair loop reads first).
+template <class... Ls>
+struct LawParams {};
+template <class L, class... Rest>
+struct LawParams<L, Rest...> {
+    typename L::Params first{};
+    LawParams<Rest...> rest{};
+};
+
 /// A compile-time list of pair laws, summed in list order.
 template <PairLaw... Ls>
 struct PairLawList {
-    using Params = std::tuple<typename Ls::Params...>; ///< one species pair's parameters
+    using Params = LawParams<Ls...>; ///< one species pair's parameters
     using State = LawStates<Ls...>;                    ///< one pair's kept state
 
     /// The parameters (or state) of law L.
@@ -78,15 +90,15 @@ struct PairLawList {
         return k;
     }();
     template <class L>
-    static auto& params(Params& p) { return std::get<index_of<L>>(p); }
+    static auto& params(Params& p) { return member_at<index_of<L>>(p); }
     template <class L>
-    static const auto& params(const Params& p) { return std::get<index_of<L>>(p); }
+    static const auto& params(const Params& p) { return member_at<index_of<L>>(p); }
     template <class L>
     static auto& state(State& s) { return state_at<index_of<L>>(s); }
 
     /// Every law's parameters from the configuration (each law's `from_config`, beside the law).
     template <class... Args>
-    static Params from_config(const Args&... args) { return Params{Ls::from_config(args...)...}; }
+    static Params from_config(const Args&... args) { return from_config_of(all{}, args...); }
 
     /// Interaction range of the pair beyond contact [m]: the largest of the laws' ranges.
     static double range(const Params& p, double r_i, double r_j) { return range_of(all{}, p, r_i, r_j); }
@@ -134,10 +146,20 @@ private:
     template <std::size_t K>
     using at = std::tuple_element_t<K, std::tuple<Ls...>>;
 
+    /// The K-th member of a LawStates or LawParams.
     template <std::size_t K, class S>
-    [[gnu::always_inline]] static inline auto& state_at(S& s) {
+    [[gnu::always_inline]] static inline auto& member_at(S& s) {
         if constexpr (K == 0) return s.first;
-        else return state_at<K - 1>(s.rest);
+        else return member_at<K - 1>(s.rest);
+    }
+    template <std::size_t K, class S>
+    [[gnu::always_inline]] static inline auto& state_at(S& s) { return member_at<K>(s); }
+
+    template <std::size_t... K, class... Args>
+    static Params from_config_of(std::index_sequence<K...>, const Args&... args) {
+        Params p;
+        ((member_at<K>(p) = at<K>::from_config(args...)), ...);
+        return p;
     }
 
     // The folds over the list, one per operation (index sequences, no lambdas: every layer
@@ -145,7 +167,7 @@ private:
     template <std::size_t... K>
     static double range_of(std::index_sequence<K...>, const Params& p, double r_i, double r_j) {
         double h = 0.0;
-        ((h = std::max(h, at<K>::range(std::get<K>(p), r_i, r_j))), ...);
+        ((h = std::max(h, at<K>::range(member_at<K>(p), r_i, r_j))), ...);
         return h;
     }
     template <std::size_t... K>
@@ -153,20 +175,20 @@ private:
                                                             const Params& p, State& s, double dt,
                                                             PairResistance* resistance) {
         PairForce f{};
-        ((f += at<K>::force(g, std::get<K>(p), state_at<K>(s), dt, resistance)), ...);
+        (at<K>::add_force(g, member_at<K>(p), state_at<K>(s), dt, f, resistance), ...);
         return f;
     }
     template <std::size_t... K>
     static PairResistance resistance_of(std::index_sequence<K...>, const PairGeometry& g, const Params& p) {
         PairResistance r;
-        ((r += at<K>::resistance(g, std::get<K>(p))), ...);
+        ((r += at<K>::resistance(g, member_at<K>(p))), ...);
         return r;
     }
     template <std::size_t... K>
     static PairResistance stiffness_of(std::index_sequence<K...>, const PairGeometry& closest,
                                        const PairGeometry& now, const Params& p) {
         PairResistance k;
-        ((k += at<K>::stiffness(closest, now, std::get<K>(p))), ...);
+        ((k += at<K>::stiffness(closest, now, member_at<K>(p))), ...);
         return k;
     }
     template <std::size_t... K>

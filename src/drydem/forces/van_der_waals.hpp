@@ -50,8 +50,11 @@ struct VanDerWaalsLaw {
     struct State {};
     static constexpr std::string_view name = "van_der_waals";
     static double range(const Params& p, double r_i, double r_j) { return van_der_waals_range(p, r_i, r_j); }
-    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State&, double, PairResistance*) {
-        return van_der_waals(g, p);
+    /// Central: only the force, no torques to add.
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State&, double,
+                                                        PairForce& f, PairResistance*) {
+        if (p.hamaker == 0.0 || g.gap > p.cutoff_gap) return;
+        f.force_i += van_der_waals(g, p).force_i;
     }
     static PairResistance resistance(const PairGeometry&, const Params&) { return {}; }
     /// The snap-in at the present gap: its stiffness is negative (the attraction grows as the gap
