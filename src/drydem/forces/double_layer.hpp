@@ -12,6 +12,7 @@
 // surface forces stays the physical one. Conservative and central: no torque, no state.
 // Off by default; docs/model.md "Double-layer repulsion".
 #pragma once
+#include "drydem/forces/lubrication.hpp"
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -85,7 +86,7 @@ struct DoubleLayerLaw {
         const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
         return {double_layer_amplitude(c.double_layer_permittivity, c.double_layer_potential, c.hamaker_factor),
                 c.double_layer_debye_length,
-                c.double_layer_cutoff > 0.0 ? c.double_layer_cutoff : 2.0 * ra * rb / (ra + rb)};
+                c.double_layer_cutoff > 0.0 ? c.double_layer_cutoff : lubrication_radius(ra, rb)};
     }
 };
 

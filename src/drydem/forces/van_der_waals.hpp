@@ -7,6 +7,7 @@
 // h_cut defaults to the lubrication range r_L of the pair (C-13, chosen by the caller); no van der
 // Waals with the substrate (C-14). Conservative and central: no torque.
 #pragma once
+#include "drydem/forces/lubrication.hpp"
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
 #include "drydem/io/config.hpp"
@@ -75,7 +76,7 @@ struct VanDerWaalsLaw {
         else p = {c.hamaker_ncm_ncm, c.min_gap_ncm_ncm, 0.0};
         p.hamaker = scaled_hamaker(p.hamaker, c);
         const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
-        p.cutoff_gap = c.vdw_cutoff > 0.0 ? c.vdw_cutoff : 2.0 * ra * rb / (ra + rb);
+        p.cutoff_gap = c.vdw_cutoff > 0.0 ? c.vdw_cutoff : lubrication_radius(ra, rb);
         return p;
     }
 };
