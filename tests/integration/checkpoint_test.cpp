@@ -136,3 +136,32 @@ TEST(Checkpoint, FileIsVerifiedAndDamageIsRefused) {
     EXPECT_THROW((void)read_checkpoint_file(dir / "other.bin"), InputError);
     EXPECT_THROW((void)read_checkpoint_file(dir / "missing.bin"), InputError);
 }
+
+// The engine state starts with the pair laws' layout (names and state sizes): a checkpoint written
+// by a build with another list of laws is refused before its pair states are misread.
+TEST(Checkpoint, AnotherListOfPairLawsIsRefused) {
+    const std::string other = "hertz_mindlin:24;binder_bridge:16;";
+    BinaryWriter w;
+    w.vec(std::vector<char>(other.begin(), other.end()));
+    const std::vector<unsigned char>& bytes = w.bytes();
+    BinaryReader r(bytes, "state.bin");
+    try {
+        (void)read_engine_state(r);
+        ADD_FAILURE() << "a checkpoint of another list of pair laws was accepted";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("binder_bridge"), std::string::npos) << what;
+        EXPECT_NE(what.find(std::string(PairLaws::layout())), std::string::npos) << what;
+    }
+    // The layout of this build reads back as its own.
+    BinaryWriter ok;
+    const std::string_view mine = PairLaws::layout();
+    ok.vec(std::vector<char>(mine.begin(), mine.end()));
+    BinaryReader r2(ok.bytes(), "state.bin");
+    try {
+        (void)read_engine_state(r2);
+        ADD_FAILURE() << "an empty engine state was accepted";
+    } catch (const InputError& e) { // the rest is missing: truncated, not a layout error
+        EXPECT_NE(std::string(e.what()).find("end early"), std::string::npos) << e.what();
+    }
+}
