@@ -86,10 +86,8 @@ struct Study {
 /// A case's run folder from an earlier, stopped study (--resume): completed, or stopped with a
 /// checkpoint to continue from.
 enum class Earlier { none, completed, stopped };
-Earlier earlier_run(const std::filesystem::path& dir) {
-    std::ifstream in(dir / "summary.json");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (text.find("\"status\": \"completed\"") != std::string::npos) return Earlier::completed;
+Earlier earlier_run(const StudyCase& c, const std::filesystem::path& dir) {
+    if (read_study_row(c, dir, 0).status == "completed") return Earlier::completed;
     if (std::filesystem::exists(dir / "checkpoint" / "state.bin")) return Earlier::stopped;
     return Earlier::none;
 }
@@ -139,7 +137,7 @@ void run_locally(Study& st, const std::string& exe) {
     bool stopping = false;
     auto start_case = [&](std::size_t k) {
         const std::filesystem::path dir = st.run_dir(k);
-        const Earlier earlier = st.o.resume ? earlier_run(dir) : Earlier::none;
+        const Earlier earlier = st.o.resume ? earlier_run(st.cases[k], dir) : Earlier::none;
         if (earlier == Earlier::completed) {
             st.rows[k] = read_study_row(st.cases[k], dir, 0);
             st.report(k, ++finished, 0);
