@@ -37,8 +37,8 @@ inline double van_der_waals_range(const VanDerWaalsParams& p, double /*r_i*/, do
     return p.hamaker != 0.0 ? p.cutoff_gap : 0.0;
 }
 
-/// |dF/dh| = A^s R* / (3 h_e³) for h_min < h ≤ h_cut: the snap-in's rate (0 in overlap and
-/// below h_min, where the force is constant).
+/// |dF/dh| = A^s R* / (3 h_e³), h_e = max(h, h_min), for 0 ≤ h ≤ h_cut: the snap-in's rate; below
+/// h_min the force is constant and h_min's value is kept as a bound; 0 in overlap and beyond h_cut.
 inline double van_der_waals_stiffness(const PairGeometry& g, const VanDerWaalsParams& p) {
     if (p.hamaker == 0.0 || g.gap < 0.0 || g.gap > p.cutoff_gap) return 0.0;
     const double h = std::max(g.gap, p.min_gap);
