@@ -9,6 +9,7 @@ packages=(
   python3-matplotlib python3-vtk9 python3-numpy python3-pil time universal-ctags
   python3-scipy python3-sklearn   # drydem calibrate: qmc start, Gaussian-process surrogate
   slurm-wlm munge                 # --scheduler slurm; the test starts its own one-node cluster
+  libhypre-dev                    # BoomerAMG for the transport solves (pulls Open MPI)
 )
 # The peer benchmark (bench/peer_bench.sh) also needs LIGGGHTS and LAMMPS: pass --peers.
 if [[ "${1:-}" == "--peers" ]]; then packages+=(liggghts lammps openmpi-bin); fi

@@ -110,6 +110,8 @@ if ch and lt:
     fig.tight_layout()
     fig.savefig(os.path.join(plots, 'pore_size.png'), dpi=120)
 t = a.get('transport')
+if t and 'convergence' not in t:  # every voxel size was over the limit: nothing solved
+    t = None
 b = table('binder_profile.csv')
 if t or b:
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.4))

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include "test_dirs.hpp"
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -109,6 +110,27 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     for (const char* f : {"profiles.csv", "psd_chord.csv", "psd_local_thickness.csv"})
         EXPECT_TRUE(std::filesystem::exists(dir / "analysis" / f)) << f;
     EXPECT_NEAR(summary["psd_peak_um"].get<double>(), a["psd_peak_um"].get<double>(), 1e-12);
+
+    // What a cell model needs (issue 15), from the default transport solves and the binder model:
+    // pores that percolate with τ > 1 and a Bruggeman exponent of a granular film, a conducting
+    // solid, every voxel size of the default list solved (the film is small), the binder profile.
+    const nlohmann::json& t = a["transport"];
+    ASSERT_TRUE(t.contains("tortuosity_factor")) << t.dump();
+    EXPECT_GT(t["tortuosity_factor"]["through_plane"].get<double>(), 1.0);
+    EXPECT_LT(t["tortuosity_factor"]["through_plane"].get<double>(), 5.0);
+    EXPECT_GT(t["tortuosity_factor"]["in_plane"].get<double>(), 1.0);
+    EXPECT_GT(t["bruggeman_exponent"]["through_plane"].get<double>(), 1.0);
+    EXPECT_LT(t["bruggeman_exponent"]["through_plane"].get<double>(), 3.0);
+    EXPECT_GT(t["electronic_conductivity_S_m"].get<double>(), 0.0);
+    EXPECT_TRUE(t["solver"]["converged"].get<bool>());
+    EXPECT_EQ(t["convergence"].size(), c.analysis_transport_voxel_sizes.size());
+    EXPECT_TRUE(t["skipped"].empty());
+    EXPECT_TRUE(std::isfinite(t["relative_change_from_coarser_voxels"]["tortuosity_through_plane"].get<double>()));
+    const nlohmann::json& b = a["binder_migration"];
+    EXPECT_GT(b["bottom10_over_mean"].get<double>(), 0.0);
+    EXPECT_NEAR(b["mass_balance"].get<double>(), 0.0, 1e-9);
+    for (const char* f : {"transport_convergence.csv", "binder_profile.csv"})
+        EXPECT_TRUE(std::filesystem::exists(dir / "analysis" / f)) << f;
 }
 
 // A run that blows up (explicit integrator, time step far above the damping bound, guard set to

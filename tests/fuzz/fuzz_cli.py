@@ -133,7 +133,7 @@ def break_packing(rng, parts, box, kind):
     elif kind == "below":
         p[0][6] = -p[0][2] * rng.uniform(0.01, 3)
     elif kind == "sunk":
-        p[0][6] = p[0][2] * 0.2
+        p[0][6] = p[0][2] * 0.05
     elif kind == "huge_radius":
         p[0][2] = rng.choice([box, 1.0, 1e300])
     elif kind == "far_outside":

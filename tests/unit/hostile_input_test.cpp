@@ -175,8 +175,10 @@ TEST(ParticleGeometry, ImpossibleParticlesNameTheLineAndTheReason) {
     EXPECT_TRUE(has(deep, "overlap grossly")) << deep;
     const std::string below = geometry_error(packing("3,1,3e-6,4740,30e-6,30e-6,-1e-6"));
     EXPECT_TRUE(has(below, "particle 3 (line 4) has its centre below the substrate")) << below;
-    const std::string sunk = geometry_error(packing("3,1,3e-6,4740,30e-6,30e-6,1e-6"));
-    EXPECT_TRUE(has(sunk, "sunk into the substrate by more than half its radius")) << sunk;
+    const std::string sunk = geometry_error(packing("3,1,3e-6,4740,30e-6,30e-6,0.2e-6"));
+    EXPECT_TRUE(has(sunk, "sunk into the substrate by more than 90 % of its radius")) << sunk;
+    // A soft CB pressed 80 % into the substrate, as in our own 20.1 mg/cm² films, is a packing.
+    EXPECT_EQ(geometry_error(packing("3,1,3e-6,4740,30e-6,30e-6,0.6e-6")), "");
     const std::string huge = geometry_error(packing("3,1,1,4740,30e-6,30e-6,2"));
     EXPECT_TRUE(has(huge, "particle 3 (line 4) has radius 1e+06 um, too large")) << huge;
     const std::string far = geometry_error(packing("3,1,3e-6,4740,1,30e-6,3e-6"));

@@ -51,7 +51,7 @@ template <class Say>
 void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_top, Say&& say) {
     const DryingHistory h = read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
     BinderParams bp = o.binder;
-    if (r.transport) {
+    if (r.transport && r.transport->solved()) {
         const TransportLevel& L = r.transport->reported();
         const double alpha = bruggeman_exponent(L.porosity, L.tau_z);
         if (alpha >= 1.0 && alpha <= 5.0) bp.bruggeman = alpha;

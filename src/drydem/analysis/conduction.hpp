@@ -10,8 +10,9 @@
 // their half voxels, 2 σp σq / (σp + σq) × (face area / voxel edge) — exact for layered media — and
 // a voxel on a fixed face connects to it over half a voxel, 2 σ × face area / edge.
 // Only voxels in clusters that touch both faces carry current; the others are left out before the
-// solve (they would make the matrix singular). Solved with Eigen's ConjugateGradient and a Jacobi
-// preconditioner.
+// solve (they would make the matrix singular). Solved by conjugate gradients with an algebraic
+// multigrid preconditioner (amg_solver.hpp); Eigen's Jacobi-preconditioned CG stays as a second
+// solver for the tests.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -19,6 +20,8 @@
 #include <vector>
 
 namespace drydem::analysis {
+
+enum class Preconditioner { amg, jacobi };
 
 struct ConductionProblem {
     int nx = 0, ny = 0, nz = 0;
@@ -28,6 +31,7 @@ struct ConductionProblem {
     std::array<bool, 3> periodic{true, true, false}; ///< side conditions of the two other axes
     double tolerance = 1e-8;            ///< CG relative residual |b − A x| / |b|
     int max_iterations = 20000;
+    Preconditioner preconditioner = Preconditioner::amg;
 };
 
 struct ConductionResult {
@@ -40,8 +44,8 @@ struct ConductionResult {
     int iterations = 0;
     double residual = 0.0;           ///< CG's estimate of the relative residual
     bool converged = false;
-    const char* preconditioner = "";  ///< "Jacobi"
-    std::size_t memory_bytes = 0;    ///< masks, matrix and CG vectors
+    const char* preconditioner = "";  ///< "BoomerAMG" or "Jacobi"
+    std::size_t memory_bytes = 0;    ///< masks, matrix, vectors and the solver's own (AMG hierarchy)
     double seconds = 0.0;
 };
 

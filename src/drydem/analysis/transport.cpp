@@ -36,6 +36,14 @@ ConductionProblem problem_of(const VoxelGrid& g, int axis, double tolerance) {
     return p;
 }
 
+/// The last voxel size of the list within the voxel limit (the reported level), 0 if none.
+double finest_solvable(const Structure& s, double top, const TransportOptions& o) {
+    double finest = 0.0;
+    for (double a : o.voxels)
+        if (voxel_count(s, a, top) <= o.max_voxels) finest = a;
+    return finest;
+}
+
 } // namespace
 
 Transport film_transport(const Structure& s, double top, const TransportOptions& o) {
@@ -49,8 +57,16 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
     auto say = [&](const std::string& m) {
         if (o.log) o.log(m);
     };
+    t.max_voxels = o.max_voxels;
     for (double a : o.voxels) {
         const auto t0 = std::chrono::steady_clock::now();
+        const std::size_t count = voxel_count(s, a, top);
+        if (count > o.max_voxels) {
+            t.skipped.push_back({a, count});
+            say(fmt::format("transport {:.3g} um: skipped, {} voxels > analysis.transport_max_voxels = {}", a * 1e6,
+                            count, o.max_voxels));
+            continue;
+        }
         TransportLevel L;
         const VoxelGrid g = voxelize(s, a, top);
         L.voxel = g.az;
@@ -85,7 +101,7 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
             L.tau_x = tortuosity_factor(L.porosity, L.pore_x.sigma_eff);
             L.tau_y = tortuosity_factor(L.porosity, L.pore_y.sigma_eff);
         }
-        if (o.walkers > 0 && o.walk_steps > 0 && a == o.voxels.back()) {
+        if (o.walkers > 0 && o.walk_steps > 0 && a == finest_solvable(s, top, o)) {
             p.periodic = {true, true, false};
             L.walk = random_walk(p, o.walkers, o.walk_steps);
             say(fmt::format("transport {:.3g} um, random walks in the pores: tau x {:.4g} +- {:.2g}, y {:.4g} +- {:.2g} "

@@ -25,6 +25,9 @@ struct TransportOptions {
     double sigma_ncm = 1.0e-2;  ///< electronic conductivity of NCM [S/m] (input)
     double sigma_cb = 100.0;    ///< electronic conductivity of a CB agglomerate (carbon + binder + pores) [S/m] (input)
     double tolerance = 1e-7;    ///< CG relative residual
+    /// A voxel size whose image has more voxels is skipped (and said so): one solve holds ~400
+    /// bytes per voxel at its peak (AMG hierarchy), so 2.5e7 voxels stay near 10 GB.
+    std::size_t max_voxels = 25'000'000;
     bool in_plane = true;       ///< also τ along x and y
     /// Second method at the reported voxel size: random walks in the pores, in-plane (x, y
     /// periodic, substrate and top walls; random_walk.hpp). 0 walkers = none.
@@ -46,10 +49,20 @@ struct TransportLevel {
     std::size_t memory_bytes = 0;       ///< peak of one solve plus the image
 };
 
+/// A voxel size of the list over `max_voxels`: not solved.
+struct SkippedLevel {
+    double voxel = 0.0;       ///< [m]
+    std::size_t voxels = 0;   ///< of its image
+};
+
 struct Transport {
-    std::vector<TransportLevel> levels; ///< in the order of the options' voxel list
+    std::vector<TransportLevel> levels; ///< the solved ones, in the order of the options' voxel list
+    std::vector<SkippedLevel> skipped;  ///< over the voxel limit
+    std::size_t max_voxels = 0;
     double top = 0.0;                   ///< top of the solved coating [m]
     double sigma_ncm = 0.0, sigma_cb = 0.0;
+    [[nodiscard]] bool solved() const { return !levels.empty(); }
+    /// The finest solved level; only where solved().
     [[nodiscard]] const TransportLevel& reported() const { return levels.back(); }
 };
 

@@ -83,7 +83,7 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
         if (r.distance_saturated)
             fmt::print(stderr, "warning: some pores are wider than 255 voxels; their sizes are cut at that\n");
     }
-    if (r.transport && !r.transport->levels.empty()) {
+    if (r.transport && r.transport->solved()) {
         const analysis::TransportLevel& L = r.transport->reported();
         fmt::print("transport ({:.3g} um voxels, coating below {:.2f} um): tortuosity factor through-plane {:.3f}, "
                    "in-plane {:.3f} / {:.3f} (x / y), porosity {:.4f}, Bruggeman exponent {:.3f}; electronic "

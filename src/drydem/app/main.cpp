@@ -197,7 +197,7 @@ void declare_analyze_bench(CommandLine& a) {
         ->check(CLI::PositiveNumber);
     a.analyze->add_flag("--export", a.an.export_voxels, "write the voxel image: structure.raw + .json + .mhd");
     a.analyze->add_flag("--tiff", a.an.tiff, "also write structure.tif (multi-page, one page per z layer)");
-    a.analyze->add_flag("--no-voxels", a.an_no_voxels, "only the particle-based numbers (no pore sizes)");
+    a.analyze->add_flag("--no-voxels", a.an_no_voxels, "only the particle-based numbers (no pore sizes, no transport solves)");
     a.analyze->add_option("--threads", a.an.threads, "OpenMP threads (default all cores)")->check(CLI::PositiveNumber);
     a.analyze->add_flag("--quiet", a.an.quiet, "only the result lines");
     a.analyze->add_flag("--no-plots", a.no_plots, "skip the matplotlib plots");
@@ -253,6 +253,7 @@ int analyze_command(CommandLine& a) {
     a.an.analysis.contact_gap = a.an_gap.empty() ? c.analysis_contact_gap : length(a.an_gap, "--contact-gap");
     a.an.analysis.pore_top = a.an_pore_top.empty() ? c.analysis_pore_top : a.an_pore_top;
     set_transport_options(a.an.analysis, c);
+    if (a.an_no_voxels) a.an.analysis.transport.voxels.clear(); // the transport solves are voxel work too
     if (a.an.analysis.voxel < 0.0) throw InputError(fmt::format("--voxel {}: must be positive (0 = none)", a.an_voxel));
     if (!(a.an.analysis.profile_dz > 0.0)) throw InputError(fmt::format("--dz {}: must be positive", a.an_dz));
     if (a.an.analysis.contact_gap < 0.0) throw InputError(fmt::format("--contact-gap {}: must be >= 0", a.an_gap));

@@ -160,6 +160,7 @@ const std::vector<Field>& schema() {
          {"half_solid", "highest"}},
         {"analysis.transport_voxel_sizes", &Config::analysis_transport_voxel_sizes, D::length, 0, 10e-6, true, {},
          true},
+        {"analysis.transport_max_voxels", &Config::analysis_transport_max_voxels, D::dimensionless, 1, 1e10},
         {"analysis.ncm_conductivity", &Config::analysis_ncm_conductivity, D::dimensionless, 0, inf},
         {"analysis.cb_conductivity", &Config::analysis_cb_conductivity, D::dimensionless, 0, inf},
         {"analysis.surface_points", &Config::analysis_surface_points, D::dimensionless, 0, 1e6},

@@ -166,9 +166,10 @@ struct Config {
     double analysis_profile_dz = 0.5e-6;  ///< slab width of the height profiles [m]
     double analysis_contact_gap = 0.0;    ///< coordination: surface gap counted as contact [m]
     std::string analysis_pore_top = "half_solid"; ///< "half_solid" | "highest"
-    /// Transport (docs/analysis.md): voxel sizes of the tortuosity / conductivity solves, the last
-    /// one reported; empty = none.
-    std::vector<double> analysis_transport_voxel_sizes = {}; ///< empty = no transport solves
+    /// Transport (docs/analysis.md): voxel sizes of the tortuosity / conductivity solves, the finest
+    /// solved one reported; empty = none. Sizes with more voxels than the limit are skipped.
+    std::vector<double> analysis_transport_voxel_sizes = {0.8e-6, 0.4e-6, 0.2e-6};
+    std::uint64_t analysis_transport_max_voxels = 25'000'000;
     double analysis_ncm_conductivity = 1.0e-2; ///< electronic conductivity of NCM [S/m]
     double analysis_cb_conductivity = 100.0;   ///< electronic conductivity of a CB agglomerate [S/m]
     int analysis_surface_points = 400;         ///< points per NCM sphere of the surface split; 0 = none

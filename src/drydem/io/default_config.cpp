@@ -150,10 +150,10 @@ voxel_size = "0.1 um"            # voxel edge of the pore analysis; 0 = only thi
 profile_dz = "0.5 um"            # slab width of the height profiles
 contact_gap = "0 um"             # coordination: surface gap still counted as a contact (0 = touching)
 pore_top = "half_solid"          # pore statistics below the half-solid height ("highest": below the highest top)
-transport_voxel_sizes = []       # tortuosity / conductivity solves, one voxelization each, e.g.
-                                 # ["0.4 um", "0.2 um"]; off by default: minutes even for the quick case
-                                 # with the Jacobi-CG solver (docs/analysis.md)
-                                 # (the list shows the voxel-size convergence; the last is reported); [] = none
+transport_voxel_sizes = ["0.8 um", "0.4 um", "0.2 um"]  # tortuosity / conductivity solves, one voxelization
+                                 # each: the list shows the voxel-size convergence, the finest solved is
+                                 # reported; [] = none (docs/analysis.md)
+transport_max_voxels = 25000000  # a voxel size with more voxels is skipped (~400 bytes per voxel at peak)
 ncm_conductivity = 0.01          # electronic conductivity of NCM [S/m] (an input: lithiated NCM622 ~1e-4..1e-1)
 cb_conductivity = 100            # electronic conductivity of a CB agglomerate, carbon + binder + pores [S/m]
 surface_points = 400             # points per NCM sphere for its surface split (0 = none)

@@ -469,9 +469,11 @@ void check_particle_geometry(const ParticleFile& f, double lx, double ly, const 
         if (r.position.z < 0.0)
             throw InputError(fmt::format("{}: {} has its centre below the substrate (z = {:.4g} um < 0)", file,
                                          who(r), r.position.z * 1e6));
-        if (r.position.z < 0.5 * r.radius)
+        // Soft CB agglomerates under the NCM of a 20.1 mg/cm² film end up to 81 % of their radius
+        // in the substrate (our own final.csv, z/r = 0.19): deep, but a packing; 90 % is not.
+        if (r.position.z < 0.1 * r.radius)
             throw InputError(fmt::format(
-                "{}: {} (radius {:.4g} um, z = {:.4g} um) is sunk into the substrate by more than half its radius",
+                "{}: {} (radius {:.4g} um, z = {:.4g} um) is sunk into the substrate by more than 90 % of its radius",
                 file, who(r), r.radius * 1e6, r.position.z * 1e6));
     }
     if (const auto pair = gross_overlap(f, lx, ly)) {

@@ -76,7 +76,31 @@ void add_voxels(nlohmann::ordered_json& j, const AnalysisResult& r, const Analys
 }
 
 /// Tortuosity, MacMullin number, conductivities and the voxel-size convergence.
+nlohmann::ordered_json skipped_json(const Transport& t) {
+    nlohmann::ordered_json a = nlohmann::ordered_json::array();
+    for (const SkippedLevel& k : t.skipped)
+        a.push_back({{"voxel_size_um", k.voxel * 1e6}, {"voxels", k.voxels}, {"max_voxels", t.max_voxels}});
+    return a;
+}
+
+/// Relative change of the finest level's values against the next coarser one: how far from
+/// converged in voxel size the reported numbers are.
+nlohmann::ordered_json voxel_change_json(const Transport& t) {
+    if (t.levels.size() < 2) return {};
+    const TransportLevel &f = t.levels.back(), &c = t.levels[t.levels.size() - 2];
+    auto change = [](double fine, double coarse) {
+        return fine != 0.0 && std::isfinite(fine) && std::isfinite(coarse) ? nlohmann::ordered_json((fine - coarse) / fine)
+                                                                           : nlohmann::ordered_json();
+    };
+    return {{"from_voxel_size_um", c.voxel * 1e6},
+            {"tortuosity_through_plane", change(f.tau_z, c.tau_z)},
+            {"tortuosity_in_plane", change(f.tau_x + f.tau_y, c.tau_x + c.tau_y)},
+            {"electronic_conductivity", change(f.electronic_z.sigma_eff, c.electronic_z.sigma_eff)},
+            {"cb_network_conductivity", change(f.cb_z.sigma_eff, c.cb_z.sigma_eff)}};
+}
+
 nlohmann::ordered_json transport_json(const Transport& t) {
+    if (!t.solved()) return {{"skipped", skipped_json(t)}};
     const TransportLevel& L = t.reported();
     const double tau_in = 0.5 * (L.tau_x + L.tau_y);
     auto nan_null = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
@@ -120,7 +144,10 @@ nlohmann::ordered_json transport_json(const Transport& t) {
                              {"tortuosity_y_standard_error", err(1)},
                              {"seconds", L.walk.seconds}};
     }
-    tj["solver"] = {{"method", std::string("Eigen ConjugateGradient, ") + L.pore_z.preconditioner + " preconditioner"},
+    const std::string method = std::string(L.pore_z.preconditioner) == "BoomerAMG"
+                                   ? "conjugate gradients (hypre PCG), BoomerAMG preconditioner"
+                                   : "Eigen ConjugateGradient, Jacobi preconditioner";
+    tj["solver"] = {{"method", method},
                     {"converged", converged},
                     {"max_flux_balance", balance}};
     nlohmann::ordered_json conv = nlohmann::ordered_json::array();
@@ -137,6 +164,8 @@ nlohmann::ordered_json transport_json(const Transport& t) {
                         {"seconds", l.seconds},
                         {"memory_mb", double(l.memory_bytes) / 1e6}});
     tj["convergence"] = conv;
+    tj["relative_change_from_coarser_voxels"] = voxel_change_json(t);
+    tj["skipped"] = skipped_json(t);
     return tj;
 }
 
@@ -183,7 +212,7 @@ nlohmann::ordered_json analysis_json(const AnalysisResult& r, const AnalysisOpti
     add_bulk(j, r);
     j["profile_dz_um"] = o.profile_dz * 1e6;
     if (r.voxelized) add_voxels(j, r, o);
-    if (r.transport && !r.transport->levels.empty()) j["transport"] = transport_json(*r.transport);
+    if (r.transport) j["transport"] = transport_json(*r.transport);
     if (r.surfaces.computed) add_surfaces(j, r);
     if (r.binder) add_binder(j, r, o);
     j["version"] = DRYDEM_VERSION;
@@ -207,7 +236,7 @@ void write_analysis(const std::filesystem::path& dir, const AnalysisResult& r, c
                               p.pore[k], p.pore_total[k], p.ncm[k] + p.cb_envelope[k]);
         }
     });
-    if (r.transport)
+    if (r.transport && r.transport->solved())
         write_file_atomically(dir / "transport_convergence.csv", [&](std::ostream& os) {
             os << "voxel_size_um,nx,ny,nz,porosity,tortuosity_z,tortuosity_x,tortuosity_y,macmullin_z,"
                   "bruggeman_z,electronic_conductivity_S_m,cb_network_conductivity_S_m,cb_percolates,"
