@@ -45,3 +45,29 @@ fig.suptitle(f"{study.get('name', '')}: {study.get('completed', 0)} runs complet
              + (f", {failed} failed" if failed else ''))
 fig.tight_layout()
 fig.savefig(os.path.join(study_dir, 'plots', 'thickness_density_vs_loading.png'), dpi=120)
+
+# A drying-rate study (study.shrinkage_rate_factors): thickness, tortuosity and the binder at the
+# substrate against the rate factor, one line per loading, each run a dot.
+factors = sorted({c.get('shrinkage_rate_factor', 1.0) for c in cases})
+if len(factors) > 1:
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.0))
+    panels = (('final_thickness_um', 'dry film thickness / µm'),
+              ('tortuosity_through_plane', 'tortuosity factor through-plane'),
+              ('binder_bottom10_over_mean', 'binder in the bottom 10 % / mean'))
+    for ax, (key, label) in zip(axes, panels):
+        for load in sorted({c['areal_loading_mg_cm2'] for c in cases}):
+            pts = [(c['shrinkage_rate_factor'], c[key]) for c in cases
+                   if c['areal_loading_mg_cm2'] == load and c.get(key) is not None]
+            if not pts:
+                continue
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], 'o', alpha=0.5)
+            means = [(f, sum(p[1] for p in pts if p[0] == f) / sum(1 for p in pts if p[0] == f))
+                     for f in factors if any(p[0] == f for p in pts)]
+            ax.plot([m[0] for m in means], [m[1] for m in means], '-', label=f'{load:.2f} mg/cm$^2$')
+        ax.set_xscale('log')
+        ax.set_xlabel('shrinkage-rate factor (drying rate)')
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(study_dir, 'plots', 'drying_rate.png'), dpi=120)

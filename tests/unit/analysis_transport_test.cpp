@@ -298,3 +298,24 @@ TEST(RandomWalk, AgreesWithTheConductionSolveOnARandomPoreSpace) {
     EXPECT_GT(tau_solve, 1.3); // a real detour, not the trivial case
     EXPECT_NEAR(tau_walk / tau_solve, 1.0, 0.03 + 3.0 * err / tau_solve) << tau_walk << " " << tau_solve;
 }
+
+TEST(Transport, ExtrapolationToZeroVoxelRecoversAPowerLaw) {
+    // v(h) = 1.5 + 0.8 h^p at h = 0.8, 0.4, 0.2: the limit and the order come back.
+    for (const double p : {1.0, 2.0}) {
+        const std::vector<double> h{0.8, 0.4, 0.2};
+        std::vector<double> v;
+        for (double x : h) v.push_back(1.5 + 0.8 * std::pow(x, p));
+        const Extrapolation e = extrapolate_to_zero_voxel(h, v);
+        EXPECT_TRUE(e.order_observed);
+        EXPECT_NEAR(e.order, p, 1e-12);
+        EXPECT_NEAR(e.value, 1.5, 1e-12);
+    }
+    // Two levels: first order assumed.
+    const Extrapolation two = extrapolate_to_zero_voxel({0.4, 0.2}, {1.9, 1.7});
+    EXPECT_FALSE(two.order_observed);
+    EXPECT_NEAR(two.value, 1.5, 1e-12);
+    // Non-monotone changes or unequal ratios give no value.
+    EXPECT_TRUE(std::isnan(extrapolate_to_zero_voxel({0.8, 0.4, 0.2}, {1.0, 1.2, 1.1}).value));
+    EXPECT_TRUE(std::isnan(extrapolate_to_zero_voxel({0.9, 0.4, 0.2}, {2.0, 1.8, 1.7}).value));
+    EXPECT_TRUE(std::isnan(extrapolate_to_zero_voxel({0.4}, {1.0}).value));
+}

@@ -30,6 +30,39 @@ TEST(Study, PlanIsLoadingsTimesSeeds) {
     EXPECT_THROW(plan_study(c, {-0.2}, 1), InputError);
 }
 
+TEST(Study, ShrinkageRateFactorsMultiplyThePlanAndGroupTheStatistics) {
+    Config c;
+    c.seed = 3;
+    c.dryer_schedule = "rates";
+    c.study_shrinkage_rate_factors = {0.5, 2.0};
+    const auto cases = plan_study(c, {0.03}, 2);
+    ASSERT_EQ(cases.size(), 4u);
+    EXPECT_EQ(cases[0].name, "L3.00_r0.5_s3");
+    EXPECT_DOUBLE_EQ(cases[1].shrinkage_rate_factor, 0.5);
+    EXPECT_EQ(cases[3].name, "L3.00_r2_s4");
+    std::vector<StudyRow> rows;
+    for (const StudyCase& k : cases) {
+        StudyRow r;
+        r.c = k;
+        r.status = "completed";
+        r.thickness_um = k.shrinkage_rate_factor * 10.0 + double(k.seed);
+        rows.push_back(r);
+    }
+    const auto stats = study_statistics(rows);
+    ASSERT_EQ(stats.size(), 2u); // one group per factor, not one per loading
+    EXPECT_DOUBLE_EQ(stats[0].shrinkage_rate_factor, 0.5);
+    EXPECT_DOUBLE_EQ(stats[0].thickness_mean_um, 8.5);
+    EXPECT_DOUBLE_EQ(stats[1].thickness_mean_um, 23.5);
+    // The dryer model sets its own rates: factors on them are refused, naming the key.
+    c.dryer_schedule = "model";
+    try {
+        (void)plan_study(c, {0.03}, 1);
+        FAIL() << "factors with the dryer model were accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("study.shrinkage_rate_factors"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Study, StatisticsAreMeanAndSampleStdOverCompletedRuns) {
     auto row = [](double l, std::uint64_t seed, const char* status, double h, double rho, double eps) {
         StudyRow r;

@@ -66,6 +66,17 @@ struct Transport {
     [[nodiscard]] const TransportLevel& reported() const { return levels.back(); }
 };
 
+/// Richardson extrapolation to zero voxel size of values v at voxel sizes h (coarse to fine).
+/// Three or more levels: the observed order p from the last three (equal ratios needed), accepted
+/// in [0.5, 3] with monotone changes; two levels: order 1 assumed (what the quick film shows,
+/// docs/analysis.md). `value` NaN where it cannot be done.
+struct Extrapolation {
+    double value = 0.0;
+    double order = 0.0;
+    bool order_observed = false;
+};
+[[nodiscard]] Extrapolation extrapolate_to_zero_voxel(const std::vector<double>& h, const std::vector<double>& v);
+
 /// τ = ε D₀/D_eff from σ_eff of a pore phase with σ = 1 inside (D₀ = 1): 0 when it does not percolate.
 [[nodiscard]] double tortuosity_factor(double porosity, double sigma_eff);
 /// α of τ = ε^(1−α); NaN where ε or τ make it undefined (ε ∉ (0, 1), τ ≤ 0).

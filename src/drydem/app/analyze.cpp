@@ -7,6 +7,7 @@
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/output/analysis_writer.hpp"
+#include "drydem/output/python_script.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/output/voxel_export.hpp"
 #include <fmt/format.h>
@@ -21,13 +22,13 @@ namespace drydem::app {
 namespace fs = std::filesystem;
 
 void run_plot_script(const std::string& script_name, const fs::path& dir) {
-    const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / script_name;
-    if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) {
-        fmt::print(stderr, "warning: /usr/bin/python3 or {} missing; no plots\n", script.string());
-        return;
+    switch (run_python_script(script_name, {dir.string()})) {
+    case ScriptRun::ok: break;
+    case ScriptRun::unavailable:
+        fmt::print(stderr, "warning: /usr/bin/python3 or scripts/{} missing; no plots\n", script_name);
+        break;
+    case ScriptRun::failed: fmt::print(stderr, "warning: plotting failed\n"); break;
     }
-    const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}'", script.string(), dir.string());
-    if (std::system(cmd.c_str()) != 0) fmt::print(stderr, "warning: plotting failed\n");
 }
 
 int run_analyze(const Config& c, const AnalyzeOptions& o) {

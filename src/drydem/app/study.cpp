@@ -6,8 +6,10 @@
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/io/particle_io.hpp"
+#include "drydem/output/python_script.hpp"
 #include "drydem/study/study.hpp"
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 #include <fcntl.h>
 #include <spawn.h>
@@ -67,10 +69,16 @@ struct Study {
     /// The `drydem run` arguments of case k (after the executable).
     [[nodiscard]] std::vector<std::string> run_args(std::size_t k, const std::filesystem::path& dir) const {
         const StudyCase& c = cases[k];
-        return {"run", config_file.string(), "-o", dir.string(),
-                "--set", fmt::format("film.areal_loading={:.17g}", c.areal_loading),
-                "--set", fmt::format("run.seed={}", c.seed),
-                "--set", fmt::format("run.name=\"{}-{}\"", base.name, c.name)};
+        std::vector<std::string> args{"run", config_file.string(), "-o", dir.string(),
+                                      "--set", fmt::format("film.areal_loading={:.17g}", c.areal_loading),
+                                      "--set", fmt::format("run.seed={}", c.seed),
+                                      "--set", fmt::format("run.name=\"{}-{}\"", base.name, c.name)};
+        if (!base.study_shrinkage_rate_factors.empty()) {
+            std::vector<std::string> rates;
+            for (double r : base.shrinkage_rates) rates.push_back(fmt::format("{:.17g}", r * c.shrinkage_rate_factor));
+            args.insert(args.end(), {"--set", fmt::format("dryer.shrinkage_rates=[{}]", fmt::join(rates, ", "))});
+        }
+        return args;
     }
     void report(std::size_t k, std::size_t done, int code) {
         const StudyRow& r = rows[k];
@@ -151,8 +159,9 @@ void run_locally(Study& st, const std::string& exe) {
         if (!st.o.plots) args.push_back("--no-plots");
         running[spawn(args, dir / "console.txt")] = k;
         const StudyCase& c = st.cases[k];
-        st.say(fmt::format("{} {} ({:.2f} mg/cm2, seed {})", earlier == Earlier::stopped ? "resumed" : "started",
-                           c.name, c.areal_loading * 100.0, c.seed));
+        st.say(fmt::format("{} {} ({:.2f} mg/cm2, shrinkage rates x{:g}, seed {})",
+                           earlier == Earlier::stopped ? "resumed" : "started", c.name, c.areal_loading * 100.0,
+                           c.shrinkage_rate_factor, c.seed));
     };
     while (finished < st.cases.size()) {
         while (!stopping && running.size() < std::size_t(st.jobs) && next < st.cases.size()) start_case(next++);
@@ -186,15 +195,14 @@ int finish_study(Study& st, std::chrono::steady_clock::time_point start) {
     namespace fs = std::filesystem;
     write_study_results(st.o.output_dir, st.base, st.rows);
     for (const auto& s : study_statistics(st.rows))
-        st.say(fmt::format("{:7.2f} mg/cm2: {} ok, {} failed; thickness {:.3f} +- {:.3f} um, density "
+        st.say(fmt::format("{:7.2f} mg/cm2, rates x{:g}: {} ok, {} failed; thickness {:.3f} +- {:.3f} um, density "
                            "{:.4f} +- {:.4f} g/cm3, porosity {:.4f} +- {:.4f}",
-                           s.areal_loading_mg_cm2, s.completed, s.failed, s.thickness_mean_um, s.thickness_std_um,
+                           s.areal_loading_mg_cm2, s.shrinkage_rate_factor, s.completed, s.failed, s.thickness_mean_um, s.thickness_std_um,
                            s.density_mean_g_cm3, s.density_std_g_cm3, s.porosity_mean, s.porosity_std));
     if (st.o.plots) {
-        const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "plot_study.py";
-        const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' >> '{}' 2>&1", script.string(),
-                                            st.o.output_dir.string(), (st.o.output_dir / "log.txt").string());
-        if (!fs::exists("/usr/bin/python3") || std::system(cmd.c_str()) != 0) st.say("plotting failed (see log.txt)");
+        if (run_python_script("plot_study.py", {st.o.output_dir.string()}, st.o.output_dir / "log.txt") !=
+            ScriptRun::ok)
+            st.say("plotting failed (see log.txt)");
     }
     const auto failed =
         std::count_if(st.rows.begin(), st.rows.end(), [](const StudyRow& r) { return r.status != "completed"; });

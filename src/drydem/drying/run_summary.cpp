@@ -5,6 +5,7 @@
 #include "drydem/drying/film_measures.hpp"
 #include "drydem/git_hash.hpp"
 #include "drydem/output/analysis_writer.hpp"
+#include "drydem/output/python_script.hpp"
 #include "drydem/io/particle_io.hpp"
 #include <fmt/format.h>
 #include <spdlog/logger.h>
@@ -168,22 +169,15 @@ public:
         if (!ctx_.options.plots) return;
         const fs::path dir = ctx_.options.output_dir;
         const std::string log = (dir / "log.txt").string();
-        if (!plot("plot_run.py", fmt::format("'{}'", dir.string()), log))
+        if (run_python_script("plot_run.py", {dir.string()}, log) == ScriptRun::failed)
             ctx_.log.warn("plotting failed (see log.txt)");
         if (e.summary.contains("analysis") &&
-            !plot("plot_analysis.py", fmt::format("'{}' '{}'", (dir / "analysis").string(), (dir / "plots").string()), log))
+            run_python_script("plot_analysis.py", {(dir / "analysis").string(), (dir / "plots").string()}, log) ==
+                ScriptRun::failed)
             ctx_.log.warn("plotting the analysis failed (see log.txt)");
     }
 
 private:
-    /// Runs scripts/`script` with `args`; false if it failed (true where python3 or the script
-    /// is missing: plots are optional).
-    static bool plot(const std::string& script, const std::string& args, const std::string& log) {
-        const fs::path file = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / script;
-        if (!fs::exists("/usr/bin/python3") || !fs::exists(file)) return true;
-        const std::string cmd = fmt::format("/usr/bin/python3 '{}' {} >> '{}' 2>&1", file.string(), args, log);
-        return std::system(cmd.c_str()) == 0;
-    }
 
     const RunContext& ctx_;
 };

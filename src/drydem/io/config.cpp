@@ -137,6 +137,8 @@ const std::vector<Field>& schema() {
         {"numerics.sort_every", &Config::sort_every, D::dimensionless, 0, 1e6},
         {"study.loadings", &Config::study_loadings, D::areal_density, 0, inf, true, {}, true},
         {"study.seeds", &Config::study_seeds, D::dimensionless, 1, 1000},
+        {"study.shrinkage_rate_factors", &Config::study_shrinkage_rate_factors, D::dimensionless, 0, 1e3, true, {},
+         true},
         {"study.measured_loadings", &Config::measured_loadings, D::areal_density, 0, inf, true, {}, true},
         {"study.measured_thickness", &Config::measured_thickness, D::length, 0, 1, true, {}, true},
         {"study.measured_thickness_std", &Config::measured_thickness_std, D::length, 0, 1, false, {}, true},

@@ -138,6 +138,8 @@ struct Config {
     // [study] (drydem study; paper Fig. 6)
     std::vector<double> study_loadings;  ///< [kg/m^2]; empty = film.areal_loading
     int study_seeds = 3;                 ///< runs per loading (seeds run.seed, run.seed + 1, ...)
+    /// Drying-rate study: each factor multiplies dryer.shrinkage_rates (schedule "rates"); empty = x1.
+    std::vector<double> study_shrinkage_rate_factors;
     std::vector<double> measured_loadings;        ///< [kg/m^2] of the measured points
     std::vector<double> measured_thickness;       ///< [m], one per measured loading
     std::vector<double> measured_thickness_std;   ///< [m]; empty or one per measured loading

@@ -110,8 +110,9 @@ final_gap = 0                    # end criterion top - level; 0 = largest partic
 relaxation = "10 s"              # physical time after the final thickness (C-22)
 fluid_forces_above_level = "keep"  # C-19
 
-[study]                          # drydem study: loadings x seeds (paper Fig. 6)
+[study]                          # drydem study: loadings x shrinkage-rate factors x seeds (paper Fig. 6)
 loadings = []                    # e.g. ["20.1 mg/cm^2", "25.2 mg/cm^2"]; empty = film.areal_loading
+shrinkage_rate_factors = []      # drying-rate study, e.g. [0.5, 1, 2] x dryer.shrinkage_rates (schedule "rates")
 seeds = 3                        # runs per loading: seeds run.seed, run.seed + 1, ...
 measured_loadings = []           # measured points plotted beside the simulation (optional)
 measured_thickness = []          # one per measured loading, e.g. "84 um"

@@ -99,6 +99,26 @@ nlohmann::ordered_json voxel_change_json(const Transport& t) {
             {"cb_network_conductivity", change(f.cb_z.sigma_eff, c.cb_z.sigma_eff)}};
 }
 
+/// τ and σ_eff extrapolated to zero voxel size from the solved levels (Richardson).
+nlohmann::ordered_json extrapolated_json(const Transport& t) {
+    std::vector<double> h;
+    for (const TransportLevel& l : t.levels) h.push_back(l.voxel);
+    auto field = [&](auto get) {
+        std::vector<double> v;
+        for (const TransportLevel& l : t.levels) v.push_back(get(l));
+        const Extrapolation e = extrapolate_to_zero_voxel(h, v);
+        return std::isfinite(e.value) ? nlohmann::ordered_json(e.value) : nlohmann::ordered_json();
+    };
+    std::vector<double> tz;
+    for (const TransportLevel& l : t.levels) tz.push_back(l.tau_z);
+    const Extrapolation e = extrapolate_to_zero_voxel(h, tz);
+    return {{"tortuosity_through_plane", field([](const TransportLevel& l) { return l.tau_z; })},
+            {"tortuosity_in_plane", field([](const TransportLevel& l) { return 0.5 * (l.tau_x + l.tau_y); })},
+            {"electronic_conductivity_S_m", field([](const TransportLevel& l) { return l.electronic_z.sigma_eff; })},
+            {"order", e.order},
+            {"order_source", e.order_observed ? "observed (last three voxel sizes)" : "assumed (two voxel sizes)"}};
+}
+
 nlohmann::ordered_json transport_json(const Transport& t) {
     if (!t.solved()) return {{"skipped", skipped_json(t)}};
     const TransportLevel& L = t.reported();
@@ -165,6 +185,7 @@ nlohmann::ordered_json transport_json(const Transport& t) {
                         {"memory_mb", double(l.memory_bytes) / 1e6}});
     tj["convergence"] = conv;
     tj["relative_change_from_coarser_voxels"] = voxel_change_json(t);
+    tj["extrapolated_to_zero_voxel"] = extrapolated_json(t);
     tj["skipped"] = skipped_json(t);
     return tj;
 }

@@ -13,14 +13,22 @@ namespace drydem {
 std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings, int seeds) {
     if (seeds < 1) throw InputError(fmt::format("--seeds {}: allowed 1 or more", seeds));
     const std::vector<double> ls = loadings.empty() ? std::vector<double>{base.areal_loading} : loadings;
+    const std::vector<double>& factors = base.study_shrinkage_rate_factors;
+    if (!factors.empty() && base.dryer_schedule != "rates")
+        throw InputError(fmt::format("study.shrinkage_rate_factors needs dryer.schedule = \"rates\" (it is \"{}\": "
+                                     "the dryer model computes its own rates; vary its air temperatures instead)",
+                                     base.dryer_schedule));
+    const std::vector<double> fs = factors.empty() ? std::vector<double>{1.0} : factors;
     std::vector<StudyCase> cases;
     for (double l : ls) {
         if (!(l > 0.0) || !std::isfinite(l))
             throw InputError(fmt::format("study loading {} kg/m^2: allowed > 0", l));
-        for (int k = 0; k < seeds; ++k) {
-            const std::uint64_t seed = base.seed + std::uint64_t(k);
-            cases.push_back({l, seed, fmt::format("L{:.2f}_s{}", l * 100.0, seed)});
-        }
+        for (double f : fs)
+            for (int k = 0; k < seeds; ++k) {
+                const std::uint64_t seed = base.seed + std::uint64_t(k);
+                const std::string rate = factors.empty() ? "" : fmt::format("_r{:g}", f);
+                cases.push_back({l, seed, fmt::format("L{:.2f}{}_s{}", l * 100.0, rate, seed), f});
+            }
     }
     return cases;
 }
@@ -90,16 +98,18 @@ std::vector<LoadingStats> study_statistics(const std::vector<StudyRow>& rows) {
         for (double x : v) sd += (x - mean) * (x - mean);
         sd = std::sqrt(sd / double(v.size() - 1));
     };
-    std::vector<double> loadings;
+    std::vector<std::pair<double, double>> groups; // (loading, shrinkage-rate factor)
     for (const auto& r : rows)
-        if (std::find(loadings.begin(), loadings.end(), r.c.areal_loading) == loadings.end())
-            loadings.push_back(r.c.areal_loading);
-    for (double l : loadings) {
+        if (const std::pair g{r.c.areal_loading, r.c.shrinkage_rate_factor};
+            std::find(groups.begin(), groups.end(), g) == groups.end())
+            groups.push_back(g);
+    for (const auto& [l, f] : groups) {
         LoadingStats s;
         s.areal_loading_mg_cm2 = l * 100.0;
+        s.shrinkage_rate_factor = f;
         std::vector<double> h, rho, eps;
         for (const auto& r : rows) {
-            if (r.c.areal_loading != l) continue;
+            if (r.c.areal_loading != l || r.c.shrinkage_rate_factor != f) continue;
             if (r.status != "completed") {
                 ++s.failed;
                 continue;
@@ -128,19 +138,22 @@ void write_study_results(const std::filesystem::path& dir, const Config& base,
     write_file_atomically(dir / "study.csv", [&](std::ostream& o) {
         o << "areal_loading_mg_cm2,seed,status,final_thickness_um,density_g_cm3,porosity,"
              "process_time_final_s,wall_time_s,run_dir,error,tortuosity_through_plane,tortuosity_in_plane,"
-             "bruggeman_exponent,electronic_conductivity_S_m,cb_percolates,binder_bottom10_over_mean\n";
+             "bruggeman_exponent,electronic_conductivity_S_m,cb_percolates,binder_bottom10_over_mean,"
+             "shrinkage_rate_factor\n";
         for (const auto& r : rows)
-            o << fmt::format("{:.10g},{},{},{},{},{},{},{:.4g},runs/{},{},{},{},{},{},{},{}\n", r.c.areal_loading * 100.0,
+            o << fmt::format("{:.10g},{},{},{},{},{},{},{:.4g},runs/{},{},{},{},{},{},{},{},{:g}\n", r.c.areal_loading * 100.0,
                              r.c.seed, r.status, opt(r.thickness_um), opt(r.density_g_cm3),
                              opt(r.porosity), opt(r.process_time_final_s), r.wall_time_s, r.c.name,
                              csv_text(r.error), opt(r.tortuosity_z), opt(r.tortuosity_in_plane), opt(r.bruggeman_z),
-                             opt(r.electronic_conductivity), opt(r.cb_percolates), opt(r.binder_bottom10));
+                             opt(r.electronic_conductivity), opt(r.cb_percolates), opt(r.binder_bottom10),
+                             r.c.shrinkage_rate_factor);
     });
     nlohmann::json j;
     j["name"] = base.name;
     auto jopt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
     for (const auto& r : rows)
         j["cases"].push_back({{"areal_loading_mg_cm2", r.c.areal_loading * 100.0},
+                              {"shrinkage_rate_factor", r.c.shrinkage_rate_factor},
                               {"seed", r.c.seed},
                               {"status", r.status},
                               {"error", r.error},
@@ -158,6 +171,7 @@ void write_study_results(const std::filesystem::path& dir, const Config& base,
                               {"run_dir", "runs/" + r.c.name}});
     for (const auto& s : study_statistics(rows))
         j["loadings"].push_back({{"areal_loading_mg_cm2", s.areal_loading_mg_cm2},
+                                 {"shrinkage_rate_factor", s.shrinkage_rate_factor},
                                  {"completed", s.completed},
                                  {"failed", s.failed},
                                  {"thickness_mean_um", s.thickness_mean_um},

@@ -16,11 +16,14 @@ namespace drydem {
 struct StudyCase {
     double areal_loading = 0.0; ///< [kg/m^2]
     std::uint64_t seed = 0;
-    std::string name;           ///< also the run's folder name, e.g. "L20.10_s12345"
+    std::string name;           ///< also the run's folder name, e.g. "L20.10_s12345", "L3.00_r0.5_s12345"
+    double shrinkage_rate_factor = 1.0; ///< on every dryer.shrinkage_rates entry (study.shrinkage_rate_factors)
 };
 
-/// loadings x seeds; an empty `loadings` means the config's own loading. Seeds are the config's
-/// run.seed, run.seed + 1, ... Throws InputError for no seeds or a non-positive loading.
+/// loadings x shrinkage-rate factors x seeds; an empty `loadings` means the config's own loading,
+/// empty study.shrinkage_rate_factors the config's rates. Seeds are the config's run.seed,
+/// run.seed + 1, ... Throws InputError for no seeds, a non-positive loading, or rate factors
+/// without dryer.schedule = "rates" (the dryer model sets its own rates).
 std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings, int seeds);
 
 /// The outcome of one case, as read back from its summary.json.
@@ -42,14 +45,15 @@ StudyRow read_study_row(const StudyCase& c, const std::filesystem::path& run_dir
 
 struct LoadingStats {
     double areal_loading_mg_cm2 = 0.0;
+    double shrinkage_rate_factor = 1.0;
     int completed = 0, failed = 0;
     double thickness_mean_um = 0, thickness_std_um = 0;
     double density_mean_g_cm3 = 0, density_std_g_cm3 = 0;
     double porosity_mean = 0, porosity_std = 0;
 };
 
-/// Mean and sample standard deviation (n - 1; 0 for a single run) per loading over completed runs,
-/// in the order the loadings first appear.
+/// Mean and sample standard deviation (n - 1; 0 for a single run) per loading and shrinkage-rate
+/// factor over completed runs, in the order they first appear.
 std::vector<LoadingStats> study_statistics(const std::vector<StudyRow>& rows);
 
 /// Writes study.csv (one row per case) and study.json (cases, statistics per loading and the
