@@ -1,14 +1,11 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/core/sphere.hpp"
 #include "drydem/analysis/bulk.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace drydem::analysis {
-
-namespace {
-double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
-} // namespace
 
 Masses masses(const Structure& s) {
     Masses m;

@@ -26,7 +26,7 @@ Extrapolation extrapolate_to_zero_voxel(const std::vector<double>& h, const std:
     const double h1 = h[n - 2], h2 = h[n - 1], v1 = v[n - 2], v2 = v[n - 1];
     if (!(h1 > h2 && h2 > 0.0) || !std::isfinite(v1) || !std::isfinite(v2)) return {nan, 0.0, false};
     const double r = h1 / h2;
-    if (n == 2) return {v2 + (v2 - v1) / (r - 1.0), 1.0, false};
+    if (n == 2) return {nan, 0.0, false};
     const double h0 = h[n - 3], v0 = v[n - 3];
     const double d1 = v1 - v0, d2 = v2 - v1;
     if (!(h0 > h1) || std::abs(h0 / h1 - r) > 0.01 * r || d1 == 0.0 || d2 == 0.0 || (d1 > 0) != (d2 > 0))

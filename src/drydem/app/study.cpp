@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `drydem study`: loadings x seeds, each case a `drydem run` child process (so a blow-up or a bad
+// `drydem study`: loadings x shrinkage-rate factors x seeds, each case a `drydem run` child process (so a blow-up or a bad
 // set-up of one case is recorded and the others go on), up to `jobs` at a time; then study.csv,
 // study.json and the Fig. 6 plot.
 #include "drydem/app/commands.hpp"
@@ -228,12 +228,13 @@ int run_study(const Config& base, const StudyOptions& o) {
     st.rows.resize(st.cases.size());
     fs::create_directories(o.output_dir / "runs");
     st.log.open(o.output_dir / "log.txt", std::ios::app);
-    // Every case reads the same resolved config; only loading, seed and name differ.
+    // Every case reads the same resolved config; only loading, rates, seed and name differ.
     write_file_atomically(st.config_file, [&](std::ostream& os) { os << to_toml(base); });
-    st.say(fmt::format("study '{}': {} loadings x {} seeds = {} runs, {} at a time with {} thread(s) each; "
-                       "results in {}",
-                       base.name, st.cases.size() / std::size_t(seeds), seeds, st.cases.size(), st.jobs, st.threads,
-                       o.output_dir.string()));
+    const std::size_t factors = std::max<std::size_t>(1, base.study_shrinkage_rate_factors.size());
+    st.say(fmt::format("study '{}': {} loading(s) x {} shrinkage-rate factor(s) x {} seed(s) = {} runs, {} at a time "
+                       "with {} thread(s) each; results in {}",
+                       base.name, st.cases.size() / std::size_t(seeds) / factors, factors, seeds, st.cases.size(),
+                       st.jobs, st.threads, o.output_dir.string()));
     // Without SA_RESTART, so that SIGINT/SIGTERM interrupt waitpid and reach the running cases.
     struct sigaction sa {};
     sa.sa_handler = [](int sig) { request_stop(sig); };

@@ -3,6 +3,7 @@
 // storage position, so particles can be re-sorted for memory locality while contact history,
 // output and restarts stay keyed by id (architecture.md, "Principles").
 #pragma once
+#include "drydem/core/sphere.hpp"
 #include "drydem/core/vec3.hpp"
 #include <cstdint>
 #include <numbers>
@@ -29,7 +30,7 @@ struct ParticleStore {
 
     /// Appends a sphere at rest; mass and inertia follow from radius and density.
     void add(std::uint32_t pid, std::uint8_t sp, double r, double rho, const Vec3& x) {
-        const double m = rho * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+        const double m = rho * sphere_volume(r);
         id.push_back(pid);
         species.push_back(sp);
         radius.push_back(r);

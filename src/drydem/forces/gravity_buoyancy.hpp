@@ -3,8 +3,8 @@
 //   F = -(4/3)π r³ (ρ_p - ρ_f) g_s ẑ,   g_s = g k / b = 9.81e6 m/s² (scaled, M-7)
 // Buoyancy is kept above the liquid level too (C-19, option "keep").
 #pragma once
+#include "drydem/core/sphere.hpp"
 #include "drydem/core/vec3.hpp"
-#include <numbers>
 
 namespace drydem {
 
@@ -14,8 +14,7 @@ struct GravityBuoyancyParams {
 };
 
 inline Vec3 gravity_buoyancy(double r, double particle_density, const GravityBuoyancyParams& p) {
-    const double volume = (4.0 / 3.0) * std::numbers::pi * r * r * r;
-    return {0.0, 0.0, -volume * (particle_density - p.fluid_density) * p.gravity};
+    return {0.0, 0.0, -sphere_volume(r) * (particle_density - p.fluid_density) * p.gravity};
 }
 
 } // namespace drydem

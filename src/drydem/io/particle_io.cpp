@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/core/sphere.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/core/error.hpp"
 #include <algorithm>
@@ -326,7 +327,7 @@ void read_dump(LineReader& in, std::string first, ParticleFile& out) {
         const double r = c_r >= 0 ? num(c_r, "radius") : 0.5 * num(c_d, "diameter");
         double rho = kNaN;
         if (c_rho >= 0) rho = num(c_rho, "density");
-        else if (c_m >= 0) rho = num(c_m, "mass") / (4.0 / 3.0 * std::numbers::pi * r * r * r);
+        else if (c_m >= 0) rho = num(c_m, "mass") / sphere_volume(r);
         Vec3 x{num(c_x[0], "x"), num(c_x[1], "y"), num(c_x[2], "z")};
         if (scaled[0]) x.x = last.box[0] + x.x * (last.box[1] - last.box[0]);
         if (scaled[1]) x.y = last.box[2] + x.y * (last.box[3] - last.box[2]);

@@ -115,8 +115,7 @@ nlohmann::ordered_json extrapolated_json(const Transport& t) {
     return {{"tortuosity_through_plane", field([](const TransportLevel& l) { return l.tau_z; })},
             {"tortuosity_in_plane", field([](const TransportLevel& l) { return 0.5 * (l.tau_x + l.tau_y); })},
             {"electronic_conductivity_S_m", field([](const TransportLevel& l) { return l.electronic_z.sigma_eff; })},
-            {"order", e.order},
-            {"order_source", e.order_observed ? "observed (last three voxel sizes)" : "assumed (two voxel sizes)"}};
+            {"observed_order", e.order_observed ? nlohmann::ordered_json(e.order) : nlohmann::ordered_json()}};
 }
 
 nlohmann::ordered_json transport_json(const Transport& t) {

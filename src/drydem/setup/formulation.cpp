@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/core/sphere.hpp"
 #include "drydem/setup/formulation.hpp"
 #include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
@@ -10,7 +11,6 @@
 namespace drydem {
 
 namespace {
-double sphere_volume(double d) { return std::numbers::pi * d * d * d / 6.0; }
 
 /// C-3 rounding without overflow: a count beyond 2^58 (or NaN) is left at 0 here and refused by
 /// check_derived_quantities() with the keys that caused it.
@@ -36,7 +36,7 @@ FilmRecipe make_recipe(const Config& c) {
         SizeClass s;
         s.diameter = d;
         s.density = c.ncm_density;
-        s.count_exact = per_class / sphere_volume(d);
+        s.count_exact = per_class / sphere_volume(0.5 * d);
         s.count = rounded_count(s.count_exact);
         r.species.push_back(s);
     }
@@ -48,7 +48,7 @@ FilmRecipe make_recipe(const Config& c) {
     SizeClass cb;
     cb.diameter = c.cb_diameter;
     cb.density = r.cb_effective_density;
-    cb.count_exact = r.cb_envelope_volume / sphere_volume(c.cb_diameter);
+    cb.count_exact = r.cb_envelope_volume / sphere_volume(0.5 * c.cb_diameter);
     cb.count = rounded_count(cb.count_exact);
     cb.is_cb = true;
     r.species.push_back(cb);
@@ -81,7 +81,7 @@ double FilmRecipe::realised_dry_mass() const {
     for (const SizeClass& s : species) {
         // CB particles carry pore solvent: only their carbon counts as dry mass.
         const double per_particle =
-            s.is_cb ? cb_carbon_mass / std::max(1e-300, s.count_exact) : s.density * sphere_volume(s.diameter);
+            s.is_cb ? cb_carbon_mass / std::max(1e-300, s.count_exact) : s.density * sphere_volume(0.5 * s.diameter);
         m += per_particle * s.count;
     }
     return m;
