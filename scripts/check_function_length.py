@@ -13,10 +13,6 @@ from pathlib import Path
 LIMIT = 100
 
 KNOWN_EXCEPTIONS = {
-    ("io/default_config.cpp", "default_config_toml"):
-        "one string literal: the embedded default configuration (data, not logic)",
-    ("io/config.cpp", "schema"):
-        "one table: a row per config key (data); both go when every key is declared once",
 }
 
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Config parsing: a schema table maps every TOML key to a Config member, its physical dimension
-// and its allowed range; units are converted here and nowhere else.
+// Config parsing: the schema (io/config_keys.def) maps every TOML key to a Config member, its
+// physical dimension and what it allows; units are converted here and nowhere else.
 #include "drydem/io/config.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/io/config_schema.hpp"
 #include "drydem/io/units.hpp"
 #include "drydem/setup/derived_checks.hpp"
 #include <fmt/format.h>
@@ -19,162 +20,11 @@
 namespace drydem {
 namespace {
 
-using Member = std::variant<double Config::*, int Config::*, std::uint64_t Config::*,
-                            bool Config::*, std::string Config::*, std::vector<double> Config::*>;
-
-struct Field {
-    std::string_view key;
-    Member member;
-    Dimension dim = Dimension::dimensionless;
-    double lo = -std::numeric_limits<double>::infinity();
-    double hi = std::numeric_limits<double>::infinity();
-    bool lo_open = false; ///< value must be > lo (else ≥ lo)
-    std::vector<std::string_view> choices = {}; ///< allowed strings
-    bool may_be_empty = false;                  ///< arrays: [] allowed
-};
-
-constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double max_density = 1e5; ///< [kg/m^3], 4x the densest element
+using config_schema::Field;
+using config_schema::max_density;
 using D = Dimension;
 
-const std::vector<Field>& schema() {
-    static const std::vector<Field> fields = {
-        {"run.name", &Config::name},
-        {"run.seed", &Config::seed, D::dimensionless, 0, 1.8e19},
-        {"run.time_step", &Config::time_step, D::time, 0, 1e-6},
-        {"run.threads", &Config::threads, D::dimensionless, 0, 1024},
-        {"run.max_process_time", &Config::max_process_time, D::time, 0, inf, true},
-        {"film.areal_loading", &Config::areal_loading, D::areal_density, 0, inf, true},
-        {"film.solids_mass_fraction", &Config::solids_mass_fraction, D::dimensionless, 0, 0.999, true},
-        {"film.box_x", &Config::box_x, D::length, 36e-6, inf},
-        {"film.box_y", &Config::box_y, D::length, 36e-6, inf},
-        {"formulation.ncm_mass_fraction", &Config::ncm_mass_fraction, D::dimensionless, 0, 1},
-        {"formulation.pvdf_mass_fraction", &Config::pvdf_mass_fraction, D::dimensionless, 0, 1},
-        {"formulation.cb_mass_fraction", &Config::cb_mass_fraction, D::dimensionless, 0, 1},
-        {"formulation.ncm_diameters", &Config::ncm_diameters, D::length, 0, 1e-3, true},
-        {"formulation.cb_diameter", &Config::cb_diameter, D::length, 0, 1e-3, true},
-        {"formulation.cb_porosity", &Config::cb_porosity, D::dimensionless, 0, 0.99},
-        // Upper bounds: beyond every real material (osmium 22.6 g/cm3, diamond 1.2 TPa, pitch
-        // 1e8 Pa s, mercury 0.49 N/m), so that no product of them leaves double precision.
-        {"materials.ncm_density", &Config::ncm_density, D::density, 0, max_density, true},
-        {"materials.cb_density", &Config::cb_density, D::density, 0, max_density, true},
-        {"materials.pvdf_density", &Config::pvdf_density, D::density, 0, max_density, true},
-        {"materials.solvent_density", &Config::solvent_density, D::density, 0, max_density, true},
-        {"materials.viscosity", &Config::viscosity, D::viscosity, 0, 1e9},
-        {"materials.surface_tension", &Config::surface_tension, D::surface_tension, 0, 10},
-        {"materials.contact_angle", &Config::contact_angle, D::angle, 0, 3.14159265358979},
-        {"materials.ncm_youngs_modulus", &Config::ncm_youngs_modulus, D::pressure, 0, 1e13, true},
-        {"materials.cb_youngs_modulus", &Config::cb_youngs_modulus, D::pressure, 0, 1e13, true},
-        {"materials.poisson_ratio", &Config::poisson_ratio, D::dimensionless, -1, 0.5},
-        {"materials.substrate_youngs_modulus", &Config::substrate_youngs_modulus, D::pressure, 0,
-         1e13, true},
-        {"materials.substrate_poisson_ratio", &Config::substrate_poisson_ratio, D::dimensionless,
-         -1, 0.5},
-        {"contact.friction", &Config::friction, D::dimensionless, 0, 10},
-        {"contact.substrate_friction", &Config::substrate_friction, D::dimensionless, 0, 10},
-        {"contact.restitution", &Config::restitution, D::dimensionless, 0, 1, true},
-        {"contact.rolling_friction", &Config::rolling_friction, D::dimensionless, 0, 10},
-        {"van_der_waals.hamaker_cb_cb", &Config::hamaker_cb_cb, D::energy, 0, 1e-15},
-        {"van_der_waals.hamaker_ncm_cb", &Config::hamaker_ncm_cb, D::energy, 0, 1e-15},
-        {"van_der_waals.hamaker_ncm_ncm", &Config::hamaker_ncm_ncm, D::energy, 0, 1e-15},
-        {"van_der_waals.min_gap_cb_cb", &Config::min_gap_cb_cb, D::length, 0, 1e-6, true},
-        {"van_der_waals.min_gap_ncm_cb", &Config::min_gap_ncm_cb, D::length, 0, 1e-6, true},
-        {"van_der_waals.min_gap_ncm_ncm", &Config::min_gap_ncm_ncm, D::length, 0, 1e-6, true},
-        {"van_der_waals.cutoff", &Config::vdw_cutoff, D::length, 0, 20e-6},
-        {"lubrication.enabled", &Config::lubrication},
-        {"lubrication.substrate", &Config::substrate_lubrication},
-        {"lubrication.kappa_c", &Config::kappa_c, D::dimensionless, 0, 1, true},
-        {"lubrication.uses_reduced_viscosity", &Config::lubrication_uses_reduced_viscosity},
-        {"double_layer.enabled", &Config::double_layer},
-        {"double_layer.surface_potential", &Config::double_layer_potential, D::electric_potential, -1, 1},
-        {"double_layer.debye_length", &Config::double_layer_debye_length, D::length, 0, 10e-6, true},
-        {"double_layer.relative_permittivity", &Config::double_layer_permittivity, D::dimensionless, 1, 1000},
-        {"double_layer.cutoff", &Config::double_layer_cutoff, D::length, 0, 20e-6},
-        {"scaling.time_factor", &Config::time_factor, D::dimensionless, 0, inf, true},
-        {"scaling.viscosity_reduction", &Config::viscosity_reduction, D::dimensionless, 0, inf, true},
-        {"scaling.capillary_factor", &Config::capillary_factor, D::dimensionless, 0, inf},
-        {"scaling.hamaker_factor", &Config::hamaker_factor, D::dimensionless, 0, inf},
-        {"scaling.gravity", &Config::gravity, D::acceleration, 0, inf},
-        {"dryer.shrinkage_rates", &Config::shrinkage_rates, D::velocity, 0, 1e-3, true},
-        {"dryer.line_speed", &Config::line_speed, D::velocity, 0, inf, true},
-        {"dryer.zone_length", &Config::zone_length, D::length, 0, inf, true},
-        {"dryer.schedule", &Config::dryer_schedule, D::dimensionless, -inf, inf, false,
-         {"rates", "model"}},
-        {"dryer.preset", &Config::dryer_preset, D::dimensionless, -inf, inf, false,
-         {"table2", "physical"}},
-        {"dryer.zone_lengths", &Config::dryer_zone_lengths, D::length, 0, 1e3, true},
-        // 480 K: upper end of the vapour-pressure correlation (D-5.1); the film never exceeds the air
-        {"dryer.air_temperatures", &Config::dryer_air_temperatures, D::temperature, 273.15, 480},
-        {"dryer.heat_transfer_coefficients", &Config::dryer_heat_transfer_coefficients,
-         D::heat_transfer_coefficient, 0, 1e4, true},
-        {"dryer.bottom_heat_transfer_factor", &Config::dryer_bottom_factor, D::dimensionless, 0, 10},
-        {"dryer.analogy_exponent", &Config::dryer_analogy_exponent, D::dimensionless, 0, 1},
-        {"dryer.initial_film_temperature", &Config::dryer_initial_temperature, D::temperature,
-         273.15, 480},
-        {"dryer.substrate_thickness", &Config::dryer_substrate_thickness, D::length, 0, 1e-3},
-        {"dryer.substrate_density", &Config::dryer_substrate_density, D::density, 0, max_density, true},
-        {"dryer.substrate_heat_capacity", &Config::dryer_substrate_heat_capacity, D::specific_heat,
-         0, inf, true},
-        {"dryer.supply_air_solvent_mole_fraction", &Config::dryer_supply_air_solvent,
-         D::dimensionless, 0, 0.5},
-        {"dryer.final_porosity", &Config::dryer_final_porosity, D::dimensionless, 0, 0.95, true},
-        {"dryer.vapour_pressure", &Config::dryer_vapour_pressure, D::dimensionless, -inf, inf,
-         false, {"anchored", "landolt"}},
-        {"dryer.ackermann", &Config::dryer_ackermann},
-        {"dryer.time_step", &Config::dryer_time_step, D::time, 0, 0.05, true},
-        {"dryer.coupling_tolerance", &Config::coupling_tolerance, D::length, 0, 1e-3, true},
-        {"dryer.coupling_max_iterations", &Config::coupling_max_iterations, D::dimensionless, 1, 100},
-        {"drying.final_gap", &Config::final_gap, D::length, 0, 1e-3},
-        {"drying.relaxation", &Config::relaxation, D::time, 0, inf},
-        {"drying.fluid_forces_above_level", &Config::fluid_forces_above_level, D::dimensionless,
-         -inf, inf, false, {"keep"}},
-        {"numerics.skin", &Config::skin, D::length, 0, 10e-6},
-        {"numerics.overlap_limit", &Config::overlap_limit, D::dimensionless, 0, 2, true},
-        {"numerics.stability_guard", &Config::stability_guard, D::dimensionless, -inf, inf, false,
-         {"adapt", "refuse", "warn"}},
-        {"numerics.integrator", &Config::integrator, D::dimensionless, -inf, inf, false,
-         {"semi_implicit", "explicit"}},
-        {"numerics.sort_every", &Config::sort_every, D::dimensionless, 0, 1e6},
-        {"study.loadings", &Config::study_loadings, D::areal_density, 0, inf, true, {}, true},
-        {"study.seeds", &Config::study_seeds, D::dimensionless, 1, 1000},
-        {"study.shrinkage_rate_factors", &Config::study_shrinkage_rate_factors, D::dimensionless, 0, 1e3, true, {},
-         true},
-        {"study.measured_loadings", &Config::measured_loadings, D::areal_density, 0, inf, true, {}, true},
-        {"study.measured_thickness", &Config::measured_thickness, D::length, 0, 1, true, {}, true},
-        {"study.measured_thickness_std", &Config::measured_thickness_std, D::length, 0, 1, false, {}, true},
-        {"study.measured_density", &Config::measured_density, D::density, 0, inf, true, {}, true},
-        {"study.measured_density_std", &Config::measured_density_std, D::density, 0, inf, false, {}, true},
-        {"calibration.seeds", &Config::calibration_seeds, D::dimensionless, 1, 1000},
-        {"calibration.initial_points", &Config::calibration_initial_points, D::dimensionless, 0, 10000},
-        {"calibration.evaluations", &Config::calibration_evaluations, D::dimensionless, 1, 10000},
-        {"calibration.sampler", &Config::calibration_sampler, D::dimensionless, -inf, inf, false,
-         {"sobol", "lhs"}},
-        {"scheduler.type", &Config::scheduler, D::dimensionless, -inf, inf, false, {"local", "slurm"}},
-        {"scheduler.partition", &Config::slurm_partition},
-        {"scheduler.time_limit", &Config::slurm_time_limit, D::time, 0, 366 * 86400.0},
-        {"scheduler.cpus_per_task", &Config::slurm_cpus_per_task, D::dimensionless, 1, 1024},
-        {"scheduler.resubmits", &Config::slurm_resubmits, D::dimensionless, 0, 100},
-        {"analysis.at_end", &Config::analysis_at_end},
-        {"analysis.voxel_size", &Config::analysis_voxel_size, D::length, 0, 10e-6},
-        {"analysis.profile_dz", &Config::analysis_profile_dz, D::length, 0, 1e-3, true},
-        {"analysis.contact_gap", &Config::analysis_contact_gap, D::length, 0, 10e-6},
-        {"analysis.pore_top", &Config::analysis_pore_top, D::dimensionless, -inf, inf, false,
-         {"half_solid", "highest"}},
-        {"analysis.transport_voxel_sizes", &Config::analysis_transport_voxel_sizes, D::length, 0, 10e-6, true, {},
-         true},
-        {"analysis.transport_max_voxels", &Config::analysis_transport_max_voxels, D::dimensionless, 1, 1e10},
-        {"analysis.ncm_conductivity", &Config::analysis_ncm_conductivity, D::dimensionless, 0, inf},
-        {"analysis.cb_conductivity", &Config::analysis_cb_conductivity, D::dimensionless, 0, inf},
-        {"analysis.surface_points", &Config::analysis_surface_points, D::dimensionless, 0, 1e6},
-        {"analysis.cb_coverage_gap", &Config::analysis_cb_coverage_gap, D::length, 0, 10e-6},
-        {"analysis.binder_diffusivity", &Config::analysis_binder_diffusivity, D::dimensionless, 0, 1e-6},
-        {"output.timeseries_every", &Config::timeseries_every, D::time, 0, inf, true},
-        {"output.snapshot_every", &Config::snapshot_every, D::time, 0, inf},
-        {"output.progress_every", &Config::progress_every, D::time, 0, inf, true},
-        {"output.checkpoint_every", &Config::checkpoint_every, D::time, 0, inf},
-    };
-    return fields;
-}
+const std::vector<Field>& schema() { return config_schema::schema().fields; }
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
     std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
@@ -220,11 +70,12 @@ double read_number(const toml::node& n, const Field& f) {
 }
 
 void check_range(const Field& f, double v, const std::string& text) {
-    const bool low = f.lo_open ? !(v > f.lo) : !(v >= f.lo);
-    if (!std::isfinite(v) || low || !(v <= f.hi))
+    const config_schema::Allowed& a = f.allowed;
+    const bool low = a.lo_open ? !(v > a.lo) : !(v >= a.lo);
+    if (!std::isfinite(v) || low || !(v <= a.hi))
         throw InputError(fmt::format("config key '{}': {} is out of range; allowed {}{:g}, {:g}] "
                                      "(SI units, {})",
-                                     f.key, text, f.lo_open ? "(" : "[", f.lo, f.hi,
+                                     f.key, text, a.lo_open ? "(" : "[", a.lo, a.hi,
                                      dimension_name(f.dim)));
 }
 
@@ -283,10 +134,10 @@ void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::str
             } else if constexpr (std::is_same_v<T, std::string>) {
                 auto v = n.as_string();
                 if (!v) throw InputError(fmt::format("config key '{}': {} must be a string", f.key, text));
-                if (!f.choices.empty() &&
-                    std::find(f.choices.begin(), f.choices.end(), v->get()) == f.choices.end()) {
+                const std::vector<std::string_view> choices = f.choices();
+                if (!choices.empty() && std::find(choices.begin(), choices.end(), v->get()) == choices.end()) {
                     std::string allowed;
-                    for (auto ch : f.choices) allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", ch);
+                    for (auto ch : choices) allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", ch);
                     throw InputError(fmt::format("config key '{}': {} is not allowed; allowed: {}",
                                                  f.key, text, allowed));
                 }
@@ -294,7 +145,7 @@ void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::str
                 c.*member = v->get();
             } else {
                 auto arr = n.as_array();
-                if (!arr || (arr->empty() && !f.may_be_empty))
+                if (!arr || (arr->empty() && !f.allowed.may_be_empty))
                     throw InputError(fmt::format("config key '{}': {} must be a non-empty array", f.key, text));
                 T values;
                 for (const toml::node& e : *arr) {
@@ -411,8 +262,8 @@ void parse_calibration_targets(const toml::node& n, Config& c) {
         target.quantity = *name;
         for (const char* which : {"value", "uncertainty"}) {
             const std::string bl = fmt::format("{}.{} ({})", label, which, *name);
-            Field g{bl, &Config::time_step, Dimension(q->dimension), which[0] == 'v' ? q->lo : 0.0,
-                    which[0] == 'v' ? q->hi : q->hi - q->lo, true};
+            Field g{bl, &Config::time_step, Dimension(q->dimension),
+                    config_schema::above(which[0] == 'v' ? q->lo : 0.0, which[0] == 'v' ? q->hi : q->hi - q->lo), {}, {}};
             const toml::node& v = *t.get(which);
             const double x = read_number(v, g);
             if (g.dim == D::length && !v.is_string() && x > 1e-3)
