@@ -4,11 +4,15 @@
 #include "drydem/core/error.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/io/config_schema.hpp"
+#include "drydem/io/units.hpp"
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <bit>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -74,6 +78,30 @@ TEST(Config, EveryKeyIsDeclaredOnceInItsSection) {
     }
     EXPECT_EQ(keys.size(), s.fields.size());
     EXPECT_EQ(config_schema::find("run.nmae"), nullptr);
+}
+
+// docs/configuration.md is `drydem config doc`: the key reference cannot drift from the schema.
+TEST(Config, KeyReferenceDocIsGeneratedFromTheSchema) {
+    const std::filesystem::path doc = std::filesystem::path(DRYDEM_SOURCE_DIR) / "docs" / "configuration.md";
+    std::ifstream in(doc);
+    ASSERT_TRUE(in) << doc;
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str(), config_reference_markdown())
+        << "docs/configuration.md differs from the schema (src/drydem/io/config_keys.def); regenerate it: "
+           "build/drydem config doc > docs/configuration.md";
+    for (const config_schema::Field& f : config_schema::schema().fields)
+        EXPECT_NE(text.str().find(fmt::format("| `{}` |", f.key)), std::string::npos) << f.key;
+}
+
+// The SI unit the key reference names for each dimension is one parse_quantity reads as 1.
+TEST(Config, SiUnitOfEveryDimensionReadsBack) {
+    for (int d = int(Dimension::length); d <= int(Dimension::electric_potential); ++d) {
+        const auto dim = Dimension(d);
+        ASSERT_FALSE(si_unit(dim).empty()) << dimension_name(dim);
+        EXPECT_EQ(parse_quantity(fmt::format("1 {}", si_unit(dim)), dim, "test"), 1.0) << si_unit(dim);
+    }
+    EXPECT_EQ(si_unit(Dimension::dimensionless), "");
 }
 
 // Every shipped example is a valid configuration.

@@ -123,9 +123,10 @@ void declare_dryer_check_config(CommandLine& a) {
     a.check->add_option("config", a.config_file, "TOML configuration")->check(CLI::ExistingFile);
     a.check->add_option("--set", a.sets, "override a key")->take_all();
 
-    a.config = a.cli.add_subcommand("config", "print a configuration");
-    a.config->add_option("which", a.which, "'default': the embedded default configuration")
-        ->required()->check(CLI::IsMember({"default"}));
+    a.config = a.cli.add_subcommand("config", "print the default configuration or the key reference");
+    a.config->add_option("which", a.which, "'default': the embedded default configuration; 'doc': the "
+                                           "key reference (docs/configuration.md)")
+        ->required()->check(CLI::IsMember({"default", "doc"}));
 
 }
 
@@ -371,7 +372,8 @@ int main(int argc, char** argv) {
     try {
         check_integers(a);
         if (*a.config) {
-            std::cout << default_config_toml();
+            if (a.which == "doc") std::cout << config_reference_markdown();
+            else std::cout << default_config_toml();
             return 0;
         }
         if (*a.bench) return app::run_bench(a.bench_opt);

@@ -79,6 +79,10 @@ struct Config {
 /// a comment per key (`drydem config default`), written from io/config_keys.def.
 std::string_view default_config_toml();
 
+/// The key reference, docs/configuration.md (`drydem config doc`), written from io/config_keys.def:
+/// per section a table of key, default, SI unit, allowed values and meaning.
+std::string config_reference_markdown();
+
 /// Parses and validates a TOML document (unknown keys, wrong units and out-of-range values throw
 /// InputError naming the key, the value and what is allowed). `overrides` are "dotted.key=value"
 /// strings applied on top (value parsed as TOML, else taken as a string).

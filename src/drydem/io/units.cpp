@@ -102,6 +102,10 @@ constexpr std::array<std::string_view, 19> kNames{
     "viscosity",      "surface tension", "energy",        "force",
     "areal density",  "temperature",     "angle",         "frequency",
     "heat transfer coefficient",         "specific heat capacity", "electric potential"};
+// The SI unit of each dimension, as parse_quantity reads it ("" for plain numbers).
+constexpr std::array<std::string_view, 19> kSiUnits{
+    "",     "m",     "s",      "kg",     "m/s",    "m/s^2", "kg/m^3",         "Pa",            "Pa*s", "N/m",
+    "J",    "N",     "kg/m^2", "K",      "rad",    "Hz",    "W/(m^2*K)",      "J/(kg*K)",      "V"};
 // Unit used in the "e.g." part of error messages, with its decimal exponent (0 = SI already).
 struct Example {
     std::string_view unit;
@@ -426,6 +430,11 @@ std::string example(Dimension d, const std::optional<Number>& n) {
 std::string_view dimension_name(Dimension d) {
     const auto i = index(d);
     return i < kNames.size() ? kNames[i] : "unknown";
+}
+
+std::string_view si_unit(Dimension d) {
+    const auto i = index(d);
+    return i < kSiUnits.size() ? kSiUnits[i] : "";
 }
 
 double parse_quantity(std::string_view text, Dimension expected, std::string_view key) {

@@ -38,6 +38,9 @@ enum class Dimension {
 /// Human name, e.g. "areal density".
 [[nodiscard]] std::string_view dimension_name(Dimension d);
 
+/// Its SI unit as parse_quantity reads it, e.g. "kg/m^2"; "" for dimensionless.
+[[nodiscard]] std::string_view si_unit(Dimension d);
+
 /// Parses `text` (a number with an optional unit) into SI. No unit means the number is already SI
 /// ("2.5" → 2.5; for angles radians, for temperatures kelvin). "degC" is affine and only allowed
 /// on its own ("80 degC" → 353.15). Throws InputError naming `key`, the value and what is allowed.
