@@ -78,6 +78,17 @@ ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
     return ff;
 }
 
+PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe) {
+    PairReach widest;
+    for (int i = 0; i < ff.species_count; ++i)
+        for (int j = 0; j < ff.species_count; ++j) {
+            const double d_i = recipe.species[std::size_t(i)].diameter, d_j = recipe.species[std::size_t(j)].diameter;
+            const double reach = 0.5 * (d_i + d_j) + interaction_range(ff.pair_params(i, j), 0.5 * d_i, 0.5 * d_j);
+            if (reach > widest.reach) widest = {reach, d_i, d_j};
+        }
+    return widest;
+}
+
 Integrator integrator_of(const Config& c) {
     return c.integrator == "explicit" ? Integrator::explicit_verlet : Integrator::semi_implicit;
 }

@@ -40,4 +40,12 @@ nlohmann::json to_json(const ScaledParameters& s);
 ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
                                    const ScaledParameters& s);
 
+/// The widest pair of the film's species: the largest centre distance r_i + r_j + the pair laws'
+/// range (interaction_range, as the neighbour list reaches) over every species pair [m], and the
+/// two diameters of that pair.
+struct PairReach {
+    double reach = 0.0, diameter_i = 0.0, diameter_j = 0.0;
+};
+PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe);
+
 } // namespace drydem

@@ -394,20 +394,6 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
     if (std::abs(mass_sum - 1.0) > 1e-6)
         throw InputError(fmt::format("config keys 'formulation.*_mass_fraction': NCM + PVDF + CB = "
                                      "{:g}, must sum to 1", mass_sum));
-    // Minimum image: a pair's reach plus skin must stay below half the periodic length. The widest
-    // reach is that of two of the largest spheres, d + r_L with r_L = 2R* = d/2 (M-4.1, C-13).
-    if (!c.ncm_diameters.empty()) {
-        const double d_max = *std::max_element(c.ncm_diameters.begin(), c.ncm_diameters.end());
-        const double cb_reach = 1.5 * c.cb_diameter;
-        const double skin = c.neighbor_skin();
-        const double need = 2.0 * (std::max(1.5 * d_max, cb_reach) + skin);
-        for (const auto& [key, side] : {std::pair{"film.box_x", c.box_x}, std::pair{"film.box_y", c.box_y}})
-            if (side < need)
-                throw InputError(fmt::format(
-                    "config key '{}': {:g} um is below twice the largest interaction range plus "
-                    "skin ({:g} um for {:g} um spheres); allowed >= {:g} um",
-                    key, side * 1e6, need * 0.5e6, d_max * 1e6, need * 1e6));
-    }
     const std::size_t n_measured = c.measured_loadings.size();
     for (const auto& [key, values, optional] :
          {std::tuple{"study.measured_thickness", &c.measured_thickness, false},

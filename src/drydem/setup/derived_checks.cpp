@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <unistd.h>
+#include <utility>
 
 namespace drydem {
 
@@ -68,6 +69,21 @@ TravelEstimate estimated_travel(const Config& c, const FilmRecipe& r, const Scal
         left -= dz;
     }
     return {h_final, travel, t + s.sim_time(c.relaxation)};
+}
+
+/// Minimum image: a pair's reach plus the neighbour skin must stay below half the periodic length,
+/// the reach being what the pair laws say (forces/force_field.hpp interaction_range: for two of the
+/// largest spheres d + r_L = 1.5 d with the defaults, M-4.1, C-13; wider with a van der Waals or
+/// double-layer cutoff beyond r_L).
+void check_minimum_image(const Config& c, const FilmRecipe& r, const ScaledParameters& s) {
+    const PairReach widest = widest_pair_reach(make_drying_force_field(c, r, s), r);
+    const double need = 2.0 * (widest.reach + c.neighbor_skin());
+    for (const auto& [key, side] : {std::pair{"film.box_x", c.box_x}, std::pair{"film.box_y", c.box_y}})
+        if (side < need)
+            throw InputError(fmt::format(
+                "config key '{}': {:g} um is below twice the largest interaction range plus skin ({:g} um "
+                "for {:g} and {:g} um spheres); allowed >= {:g} um",
+                key, side * 1e6, need * 0.5e6, widest.diameter_i * 1e6, widest.diameter_j * 1e6, need * 1e6));
 }
 
 } // namespace
@@ -146,6 +162,7 @@ void check_derived_quantities(const Config& c, const std::vector<std::string>& b
     if (!std::isfinite(s.surface_tension_scaled))
         refuse(c, fmt::format("the scaled surface tension is {:g} N/m; it must be finite", s.surface_tension_scaled),
                {"materials.surface_tension", "scaling.capillary_factor"}, bare);
+    check_minimum_image(c, r, s);
 
     // Steps (M-8.3) and the end criterion's window.
     if (!(c.relaxation < c.max_process_time))
