@@ -215,6 +215,18 @@ TEST(Config, BoxMustHoldTwiceTheLargestInteractionRange) {
                                           "film.box_y=61um"}));
 }
 
+// The reach is the pair laws' (interaction_range), not a fixed 1.5 d: a van der Waals cutoff of
+// 10 um beyond contact makes two 11.35 um spheres reach 21.35 um, so a 40 um box (enough with the
+// default cutoff r_L) is refused: 2 (21.35 + 0.3) um = 43.3 um.
+TEST(Config, BoxBoundFollowsTheForceLawsRange) {
+    EXPECT_NO_THROW(load_config("", "t", {"film.box_x=40um", "film.box_y=40um"}));
+    const std::string msg =
+        input_error("", {"film.box_x=40um", "film.box_y=40um", "van_der_waals.cutoff=\"10 um\""});
+    EXPECT_NE(msg.find("film.box_x"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("43.3"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("11.35 and 11.35 um"), std::string::npos) << msg;
+}
+
 TEST(Config, NegativeOrZeroDiameterIsRejected) {
     const std::string msg = input_error("", {"formulation.ncm_diameters=[\"-3 um\"]"});
     EXPECT_NE(msg.find("formulation.ncm_diameters"), std::string::npos) << msg;
