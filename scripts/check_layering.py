@@ -32,9 +32,6 @@ LAYERS = [
 
 # (including file relative to src/drydem, included folder): why it is still there.
 KNOWN_EXCEPTIONS = {
-    ("io/config.cpp", "setup"):
-        "load_config() ends with the derived-quantity checks (setup/derived_checks), which need "
-        "the recipe; they move out of io/ when the config gets its own layer (issue 12, item 2)",
     ("setup/derived_checks.cpp", "drying"):
         "the derived checks estimate the steps from the scaled parameters (drying/scaling) and "
         "take the widest pair's reach from the force field set up there; "

@@ -5,7 +5,6 @@
 #include "drydem/core/error.hpp"
 #include "drydem/io/config_schema.hpp"
 #include "drydem/io/units.hpp"
-#include "drydem/setup/derived_checks.hpp"
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <toml++/toml.h>
@@ -376,8 +375,8 @@ const std::vector<CalibrationQuantity>& calibration_quantities() {
     return q;
 }
 
-Config load_config(std::string_view toml_text, std::string_view source_name,
-                   const std::vector<std::string>& overrides) {
+ParsedConfig parse_config(std::string_view toml_text, std::string_view source_name,
+                          const std::vector<std::string>& overrides) {
     toml::table root;
     try {
         root = toml::parse(toml_text, source_name);
@@ -387,9 +386,9 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
                                      e.description()));
     }
     for (const std::string& o : overrides) apply_override(root, o);
-    Config c;
-    std::vector<std::string> bare_lengths; // length keys given as bare numbers (SI metres)
-    walk(root, "", c, bare_lengths);
+    ParsedConfig parsed;
+    Config& c = parsed.config;
+    walk(root, "", c, parsed.bare_lengths);
     const double mass_sum = c.ncm_mass_fraction + c.pvdf_mass_fraction + c.cb_mass_fraction;
     if (std::abs(mass_sum - 1.0) > 1e-6)
         throw InputError(fmt::format("config keys 'formulation.*_mass_fraction': NCM + PVDF + CB = "
@@ -415,16 +414,15 @@ Config load_config(std::string_view toml_text, std::string_view source_name,
         throw InputError(fmt::format("config key 'scheduler.partition': \"{}\" is not allowed; allowed: a "
                                      "partition name of letters, digits, '_', '-', '.' (',' between names)",
                                      c.slurm_partition));
-    check_derived_quantities(c, bare_lengths);
-    return c;
+    return parsed;
 }
 
-Config load_config_file(const std::string& path, const std::vector<std::string>& overrides) {
+std::string read_config_text(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError(fmt::format("cannot read config file '{}'", path));
     std::stringstream s;
     s << in.rdbuf();
-    return load_config(s.str(), path, overrides);
+    return s.str();
 }
 
 std::string to_toml(const Config& c) {

@@ -83,12 +83,22 @@ std::string_view default_config_toml();
 /// per section a table of key, default, SI unit, allowed values and meaning.
 std::string config_reference_markdown();
 
+/// A configuration validated key by key and across keys, and the length keys it gave as bare
+/// numbers (SI metres: the derived checks hint "did you mean ... um?" where they make no sense).
+struct ParsedConfig {
+    Config config;
+    std::vector<std::string> bare_lengths;
+};
+
 /// Parses and validates a TOML document (unknown keys, wrong units and out-of-range values throw
 /// InputError naming the key, the value and what is allowed). `overrides` are "dotted.key=value"
-/// strings applied on top (value parsed as TOML, else taken as a string).
-Config load_config(std::string_view toml_text, std::string_view source_name,
-                   const std::vector<std::string>& overrides = {});
-Config load_config_file(const std::string& path, const std::vector<std::string>& overrides = {});
+/// strings applied on top (value parsed as TOML, else taken as a string). What the keys imply
+/// together (particle counts, steps, memory) is checked a layer up: load_config
+/// (setup/derived_checks.hpp) is what the commands read.
+ParsedConfig parse_config(std::string_view toml_text, std::string_view source_name,
+                          const std::vector<std::string>& overrides = {});
+/// The text of a config file; InputError naming it where it cannot be read.
+std::string read_config_text(const std::string& path);
 
 /// The resolved configuration as TOML, every value in SI (written into each output folder).
 std::string to_toml(const Config& c);

@@ -201,4 +201,15 @@ void check_fits_this_machine(const Config& c) {
             d.particles, d.memory_bytes / 1e9, have / 1e9));
 }
 
+Config load_config(std::string_view toml_text, std::string_view source_name,
+                   const std::vector<std::string>& overrides) {
+    ParsedConfig p = parse_config(toml_text, source_name, overrides);
+    check_derived_quantities(p.config, p.bare_lengths);
+    return std::move(p.config);
+}
+
+Config load_config_file(const std::string& path, const std::vector<std::string>& overrides) {
+    return load_config(read_config_text(path), path, overrides);
+}
+
 } // namespace drydem

@@ -7,6 +7,7 @@
 #include "drydem/io/config.hpp"
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace drydem {
@@ -33,6 +34,11 @@ struct DerivedQuantities {
     double memory_bytes = 0.0;     ///< particles x bytes_per_particle + 5 MB
     double dryer_steps = 0.0;      ///< RK4 steps of the dryer model over all zones
 };
+
+/// parse_config, then check_derived_quantities: a configuration every command can run.
+Config load_config(std::string_view toml_text, std::string_view source_name,
+                                 const std::vector<std::string>& overrides = {});
+Config load_config_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
 /// Computes the derived quantities without checking them (InputError only from make_recipe).
 [[nodiscard]] DerivedQuantities derived_quantities(const Config& c);

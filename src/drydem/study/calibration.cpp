@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/setup/derived_checks.hpp"
 #include "drydem/study/calibration.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/units.hpp"
