@@ -19,8 +19,8 @@ LAYERS = [
     ["core"],                          # vectors, box, particle store, errors: no physics
     ["io"],                            # config (units, schema, defaults), particle files, output folder
     ["setup"],                         # formulation -> recipe and particles; Eq. 4 (setup/solids)
-    ["dryer"],                         # the dryer model (uses Eq. 4 from setup/solids)
-    ["forces", "integrate"],           # pair and body laws (and their list); step bounds
+    ["dryer_model"],                   # the dryer model (uses Eq. 4 from setup/solids)
+    ["forces"],                        # pair and body laws (and their list), their time scales
     ["neighbor"],                      # neighbour list, holding the pair laws' per-pair state
     ["engine"],                        # the simulation: pair loop, integration, stability estimate
     ["analysis"],                      # structure analysis of a particle set

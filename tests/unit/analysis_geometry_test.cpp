@@ -16,12 +16,19 @@ using namespace drydem::analysis;
 
 namespace {
 
+/// An empty structure with the embedded default's formulation (the paper's 20.1 mg/cm2 recipe).
+Structure paper_structure() {
+    Structure s;
+    s.formulation = analysis_formulation(Config{});
+    return s;
+}
+
 constexpr double pi = std::numbers::pi;
 
 /// Simple cubic lattice of touching spheres (radius r, spacing 2r): n x n per layer, `layers`
 /// layers, the first on the substrate; the box is exactly n cells wide.
 Structure simple_cubic(int n, int layers, double r) {
-    Structure s;
+    Structure s = paper_structure();
     s.box.lx = s.box.ly = 2.0 * r * n;
     for (int k = 0; k < layers; ++k)
         for (int j = 0; j < n; ++j)
@@ -33,7 +40,7 @@ Structure simple_cubic(int n, int layers, double r) {
 /// FCC lattice (cubic cell a = 2 sqrt(2) r, touching along the face diagonals), n x n x m cells;
 /// the lowest spheres sit at z = r.
 Structure fcc(int n, int m, double r) {
-    Structure s;
+    Structure s = paper_structure();
     const double a = 2.0 * std::sqrt(2.0) * r;
     s.box.lx = s.box.ly = a * n;
     const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
@@ -58,7 +65,7 @@ TEST(SphereSlab, WholeHalfAndCapVolumes) {
 }
 
 TEST(Profiles, SingleSphereSlabsAddUpExactly) {
-    Structure s;
+    Structure s = paper_structure();
     s.box.lx = s.box.ly = 10e-6;
     const double r = 3.3e-6, zc = 3.7e-6;
     s.add({5e-6, 5e-6, zc}, r, Phase::ncm, 4740.0);
@@ -102,6 +109,16 @@ TEST(Profiles, FccInteriorIsClosePacked) {
     for (std::size_t k = 1; k + 2 < p.size(); ++k) EXPECT_NEAR(p.cb_envelope[k], pi / (3.0 * std::sqrt(2.0)), 1e-12);
     // Carbon only: (1 - ε_CB) of the envelope.
     EXPECT_NEAR(p.cb_carbon[2], 0.25 * p.cb_envelope[2], 1e-15);
+}
+
+TEST(Bulk, NoFormulationGivesNoMassesNotInventedOnes) {
+    // The formulation's defaults are the configuration's (io/config_keys.def), never the
+    // analysis's own: a structure built without one reports NaN, not the paper's numbers.
+    Structure s = simple_cubic(2, 2, 1.0e-6);
+    s.formulation = Formulation{};
+    EXPECT_TRUE(std::isnan(s.formulation.solids_density()));
+    const Profiles p = volume_fraction_profiles(s, 0.25e-6, highest_top(s));
+    EXPECT_TRUE(std::isnan(bulk_properties(s, p.solid(), 0.25e-6).porosity));
 }
 
 TEST(Bulk, ThicknessDensityAndPorosityFromTheMasses) {
@@ -182,7 +199,7 @@ TEST(Coordination, FccHasTwelveAndPairTypesAreCounted) {
 }
 
 TEST(Voxelize, SphereVolumeAndPeriodicWrap) {
-    Structure s;
+    Structure s = paper_structure();
     s.box.lx = s.box.ly = 8e-6;
     const double r = 2.0e-6;
     s.add({0.3e-6, 7.9e-6, 3e-6}, r, Phase::ncm, 4740.0); // cut by both periodic edges

@@ -3,6 +3,7 @@
 // chord lengths of a Boolean model (exponential, mean 4R / (3 (-ln ε))), local thickness of a slit
 // and a cylinder, intrusion through a throat, and the voxel files' round trip.
 #include "drydem/analysis/analyze.hpp"
+#include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/analysis/chords.hpp"
 #include "drydem/analysis/distance_transform.hpp"
@@ -23,6 +24,13 @@ using namespace drydem::analysis;
 
 namespace {
 
+/// An empty structure with the embedded default's formulation (the paper's 20.1 mg/cm2 recipe).
+Structure paper_structure() {
+    Structure s;
+    s.formulation = analysis_formulation(Config{});
+    return s;
+}
+
 VoxelGrid solid_grid(int nx, int ny, int nz, std::uint8_t fill = label_ncm) {
     VoxelGrid g;
     g.nx = nx;
@@ -38,7 +46,7 @@ double diameter(std::uint16_t r2) { return 2.0 * std::sqrt(double(r2)); }
 /// A Boolean model: spheres of radius R placed uniformly (overlaps allowed), periodic in x and y,
 /// centres also below and above [0, H] so the whole film is homogeneous.
 Structure boolean_model(double box, double height, double R, double porosity, std::uint64_t seed) {
-    Structure s;
+    Structure s = paper_structure();
     s.box.lx = s.box.ly = box;
     const double n_per_volume = -std::log(porosity) / (4.0 / 3.0 * std::numbers::pi * R * R * R);
     const double volume = box * box * (height + 2 * R);
@@ -210,7 +218,7 @@ TEST(MercuryIntrusion, BodyBehindAThroatFillsAtTheThroatSize) {
 
 TEST(VoxelFiles, RawJsonMhdAndTiffRoundTrip) {
     const auto dir = testing_support::temp_dir();
-    Structure s;
+    Structure s = paper_structure();
     s.box.lx = 3e-6;
     s.box.ly = 2e-6;
     s.add({1e-6, 1e-6, 1.2e-6}, 0.8e-6, Phase::ncm, 4740.0);

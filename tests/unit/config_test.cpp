@@ -97,12 +97,27 @@ TEST(Config, KeyReferenceDocIsGeneratedFromTheSchema) {
 
 // The SI unit the key reference names for each dimension is one parse_quantity reads as 1.
 TEST(Config, SiUnitOfEveryDimensionReadsBack) {
-    for (int d = int(Dimension::length); d <= int(Dimension::electric_potential); ++d) {
+    for (int d = int(Dimension::length); d <= int(Dimension::diffusivity); ++d) {
         const auto dim = Dimension(d);
         ASSERT_FALSE(si_unit(dim).empty()) << dimension_name(dim);
         EXPECT_EQ(parse_quantity(fmt::format("1 {}", si_unit(dim)), dim, "test"), 1.0) << si_unit(dim);
     }
     EXPECT_EQ(si_unit(Dimension::dimensionless), "");
+}
+
+// The analysis's material inputs carry their units (issue 15): conductivities in S/m (siemens, not
+// seconds), the binder's diffusivity in m^2/s; a wrong unit names the key.
+TEST(Config, ConductivityAndDiffusivityHaveUnits) {
+    EXPECT_DOUBLE_EQ(parse_quantity("1 mS/cm", Dimension::electrical_conductivity, "k"), 0.1);
+    EXPECT_DOUBLE_EQ(parse_quantity("2 S/m", Dimension::electrical_conductivity, "k"), 2.0);
+    EXPECT_DOUBLE_EQ(parse_quantity("1 cm^2/s", Dimension::diffusivity, "k"), 1e-4);
+    const Config c = load_config("[analysis]\nncm_conductivity = \"10 mS/m\"\n"
+                                 "binder_diffusivity = \"6.5 um^2/s\"\n", "t", {});
+    EXPECT_DOUBLE_EQ(c.analysis_ncm_conductivity, 1e-2);
+    EXPECT_DOUBLE_EQ(c.analysis_binder_diffusivity, 6.5e-12);
+    const std::string msg = input_error("[analysis]\ncb_conductivity = \"100 s/m\"\n");
+    EXPECT_NE(msg.find("analysis.cb_conductivity"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("electrical conductivity"), std::string::npos) << msg;
 }
 
 // Every shipped example is a valid configuration.

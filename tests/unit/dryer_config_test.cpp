@@ -3,7 +3,7 @@
 // to FilmDryerParams, and every bad-input rule (InputError naming key, value and what is allowed).
 #include "drydem/setup/derived_checks.hpp"
 #include "drydem/core/error.hpp"
-#include "drydem/dryer/dryer_config.hpp"
+#include "drydem/dryer_model/dryer_config.hpp"
 #include "drydem/io/config.hpp"
 #include <gtest/gtest.h>
 #include <string>

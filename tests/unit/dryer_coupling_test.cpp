@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The dryer <-> DEM coupling driver (dryer.md D-6) with a mock DEM.
 #include "drydem/core/error.hpp"
-#include "drydem/dryer/coupling.hpp"
+#include "drydem/dryer_model/coupling.hpp"
+#include "drydem/dryer_model/dryer_config.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
 

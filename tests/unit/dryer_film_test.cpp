@@ -2,7 +2,7 @@
 // The film dryer model (dryer.md D-1 ... D-4) against the verification results of D-7: wet-film
 // steady states, Table 2 reproduction for both presets, balances, Eq. 3 and the D-4 fit.
 #include "drydem/core/error.hpp"
-#include "drydem/dryer/film_dryer.hpp"
+#include "drydem/dryer_model/dryer_config.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <vector>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // NMP and air property correlations at the check values of dryer.md D-5 (relative 1e-4; the
 // values are those of the Python reference dryer_ref.py at 6 significant digits).
-#include "drydem/dryer/nmp_properties.hpp"
+#include "drydem/dryer_model/nmp_properties.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // dryer.json / dryer.csv of `drydem dryer` (interface.md): the keys users script against.
-#include "drydem/dryer/dryer_report.hpp"
+#include "drydem/dryer_model/dryer_config.hpp"
+#include "drydem/dryer_model/dryer_report.hpp"
 #include <gtest/gtest.h>
 #include <filesystem>
 #include <fstream>

@@ -96,8 +96,11 @@ TEST(Units, DimensionMismatchNamesKeyValueAndWhatIsAllowed) {
     EXPECT_NE(msg2.find("40 deg"), std::string::npos);
     EXPECT_NE(msg2.find("angle"), std::string::npos);
     // A compound unit with no name shows its SI base form.
-    const auto msg3 = error_of("3 m^2/s", D::velocity, "k");
-    EXPECT_NE(msg3.find("m^2 s^-1"), std::string::npos) << msg3;
+    const auto msg3 = error_of("3 m^3/s", D::velocity, "k");
+    EXPECT_NE(msg3.find("m^3 s^-1"), std::string::npos) << msg3;
+    // One with a name shows the name.
+    const auto msg4 = error_of("3 m^2/s", D::velocity, "k");
+    EXPECT_NE(msg4.find("(diffusivity)"), std::string::npos) << msg4;
     EXPECT_NE(error_of("1 m", D::time).find("a time is expected"), std::string::npos);
     EXPECT_NE(error_of("1 m", D::acceleration).find("an acceleration"), std::string::npos);
     EXPECT_NE(error_of("20 mg/cm^3", D::areal_density).find("mg/cm^2"), std::string::npos);

@@ -14,13 +14,15 @@ namespace drydem::analysis {
 
 enum class Phase : std::uint8_t { ncm = 1, cb = 2 }; ///< = voxel labels (0 = pore)
 
-/// Formulation constants of the analysis (SI): where the dry mass sits.
+/// Formulation constants of the analysis (SI): where the dry mass sits. No defaults here: they are
+/// the run configuration's, declared once (io/config_keys.def); drying/analysis_inputs.hpp fills
+/// this from a config, and a structure without it reports no masses (NaN), never invented ones.
 struct Formulation {
-    double ncm_density = 4740.0;       ///< [kg/m^3], used where the file has no density
-    double cb_density = 1660.0;        ///< carbon [kg/m^3]
-    double cb_porosity = 0.75;         ///< ε_CB: carbon fraction of an agglomerate is 1 - ε_CB
-    double pvdf_density = 1780.0;      ///< [kg/m^3]
-    double ncm_mass_fraction = 0.94, cb_mass_fraction = 0.03, pvdf_mass_fraction = 0.03;
+    double ncm_density{};        ///< [kg/m^3], used where the file has no density
+    double cb_density{};         ///< carbon [kg/m^3]
+    double cb_porosity{};        ///< ε_CB: carbon fraction of an agglomerate is 1 - ε_CB
+    double pvdf_density{};       ///< [kg/m^3]
+    double ncm_mass_fraction{}, cb_mass_fraction{}, pvdf_mass_fraction{};
     [[nodiscard]] double solids_density() const; ///< ρ_s, Eq. 4
 };
 

@@ -2,11 +2,11 @@
 // `drydem check`: every derived quantity of a configuration (counts, wet height, scaled
 // parameters, time step and its limits, memory and cost estimate).
 #include "drydem/app/commands.hpp"
+#include "drydem/core/sphere.hpp"
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/drying/stability_clusters.hpp"
 #include "drydem/setup/derived_checks.hpp"
-#include "drydem/integrate/timestep.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <fmt/format.h>
 #include <algorithm>
@@ -77,7 +77,7 @@ void print_check(const Config& c) {
     // Time-step limits for the smallest particle (M-9.2).
     const SizeClass& cb = *std::min_element(r.species.begin(), r.species.end(),
                                             [](const SizeClass& a, const SizeClass& b) { return a.diameter < b.diameter; });
-    const double rc = 0.5 * cb.diameter, m = cb.density * 4.0 / 3.0 * pi * rc * rc * rc;
+    const double rc = 0.5 * cb.diameter, m = cb.density * sphere_volume(rc);
     const double e_cb = cb.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
     const HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair_params(r.cb_species(), r.cb_species()));
     const double tr = rayleigh_time(rc, cb.density, e_cb, c.poisson_ratio);
@@ -90,7 +90,7 @@ void print_check(const Config& c) {
                hertz_contact_time(m / 2, rc / 2, hm.e_star, 1.0),
                hertz_contact_time(m / 2, rc / 2, hm.e_star, s.level_speeds_scaled.front()));
     fmt::print("  Stokes drag (scaled)      2 m/(6 pi eta r) = {:.3g} s\n",
-               2 * stokes_relaxation_time(m, rc, s.drag_viscosity_scaled));
+               2 * stokes_relaxation_time(m, rc, StokesDragParams{s.drag_viscosity_scaled}));
     fmt::print("  capillary spring period   {:.3g} s\n",
                capillary_stiffness(ff.capillary) > 0 ? 2 * pi * std::sqrt(m / capillary_stiffness(ff.capillary)) : INFINITY);
     print_guard_clusters(c, r);

@@ -3,9 +3,9 @@
 // (the dryer <-> DEM iteration of paper Sec. 8, dryer.md D-6).
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
-#include "drydem/dryer/coupling.hpp"
-#include "drydem/dryer/dryer_config.hpp"
-#include "drydem/dryer/dryer_report.hpp"
+#include "drydem/dryer_model/coupling.hpp"
+#include "drydem/dryer_model/dryer_config.hpp"
+#include "drydem/dryer_model/dryer_report.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/git_hash.hpp"
 #include <fmt/format.h>

@@ -5,7 +5,7 @@
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
-#include "drydem/dryer/dryer_config.hpp"
+#include "drydem/dryer_model/dryer_config.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/io/output_folder.hpp"
 #include "drydem/io/units.hpp"

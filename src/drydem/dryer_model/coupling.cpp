@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/dryer/coupling.hpp"
+#include "drydem/dryer_model/coupling.hpp"
 #include "drydem/core/error.hpp"
 #include <fmt/format.h>
 #include <cmath>

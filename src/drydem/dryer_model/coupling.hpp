@@ -6,7 +6,7 @@
 // until the DEM's h_f differs from the h_f the dryer assumed by less than the tolerance.
 // The DEM is a callable, so the driver is tested with a mock and used with run_drying.
 #pragma once
-#include "drydem/dryer/film_dryer.hpp"
+#include "drydem/dryer_model/film_dryer.hpp"
 #include <functional>
 #include <string>
 #include <vector>

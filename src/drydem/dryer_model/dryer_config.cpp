@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/dryer/dryer_config.hpp"
+#include "drydem/dryer_model/dryer_config.hpp"
 
 namespace drydem::dryer {
 
 FilmDryerParams film_dryer_params(const Config& c) {
-    FilmDryerParams p = film_dryer_preset(c.dryer_preset);
+    FilmDryerParams p;
+    p.preset = c.dryer_preset;
     p.w_ncm = c.ncm_mass_fraction;
     p.w_pvdf = c.pvdf_mass_fraction;
     p.w_cb = c.cb_mass_fraction;
@@ -24,13 +25,20 @@ FilmDryerParams film_dryer_params(const Config& c) {
                            c.dryer_heat_transfer_coefficients.at(k)});
     p.bottom_factor = c.dryer_bottom_factor;
     p.supply_air_solvent = c.dryer_supply_air_solvent;
-    if (c.dryer_analogy_exponent > 0.0) p.analogy_exponent = c.dryer_analogy_exponent;
+    p.analogy_exponent = c.dryer_analogy_exponent > 0.0 ? c.dryer_analogy_exponent
+                                                        : preset_analogy_exponent(c.dryer_preset);
     p.ackermann = c.dryer_ackermann;
     p.vapour_pressure = c.dryer_vapour_pressure == "landolt" ? antoine_landolt : antoine_anchored;
     p.initial_temperature = c.dryer_initial_temperature;
     p.final_porosity = c.dryer_final_porosity;
     p.time_step = c.dryer_time_step;
     return p;
+}
+
+FilmDryerParams film_dryer_preset(std::string_view name) {
+    Config c; // the embedded defaults: the paper's 20.1 mg/cm2 film in its dryer
+    c.dryer_preset = std::string(name);
+    return film_dryer_params(c);
 }
 
 Config with_model_schedule(const Config& c) {

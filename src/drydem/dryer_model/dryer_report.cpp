@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/dryer/dryer_report.hpp"
+#include "drydem/dryer_model/dryer_report.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/git_hash.hpp"
 #include <fmt/format.h>

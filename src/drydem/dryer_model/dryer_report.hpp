@@ -3,7 +3,7 @@
 // states, consolidation and dry positions, preset and every input) and dryer.csv (the drying
 // curve along the dryer, paper Figs. 2-3).
 #pragma once
-#include "drydem/dryer/film_dryer.hpp"
+#include "drydem/dryer_model/film_dryer.hpp"
 #include <filesystem>
 #include <nlohmann/json.hpp>
 

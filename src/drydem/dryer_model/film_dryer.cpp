@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/dryer/film_dryer.hpp"
+#include "drydem/dryer_model/film_dryer.hpp"
 #include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
 #include <fmt/format.h>
@@ -12,18 +12,10 @@ namespace drydem::dryer {
 
 using namespace constants;
 
-FilmDryerParams film_dryer_preset(std::string_view name) {
-    FilmDryerParams p;
-    if (name == "physical") {
-        p.analogy_exponent = 1.0 / 3.0; // Chilton-Colburn (D-2.4)
-    } else if (name == "table2") {
-        p.analogy_exponent = 0.42;      // impinging-jet exponent, calibrated to Table 2 (D-3)
-    } else {
-        throw InputError(fmt::format("dryer preset '{}' is unknown; allowed: \"physical\", \"table2\"", name));
-    }
-    p.preset = std::string(name);
-    p.final_porosity = 0.44;
-    return p;
+double preset_analogy_exponent(std::string_view preset) {
+    if (preset == "physical") return 1.0 / 3.0; // Chilton-Colburn (D-2.4)
+    if (preset == "table2") return 0.42;        // impinging-jet exponent, calibrated to Table 2 (D-3)
+    throw InputError(fmt::format("dryer preset '{}' is unknown; allowed: \"physical\", \"table2\"", preset));
 }
 
 FilmGeometry film_geometry(const FilmDryerParams& p) {

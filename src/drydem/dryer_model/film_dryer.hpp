@@ -10,7 +10,7 @@
 // (D-2.6). The per-section least-squares slope of the thickness h(t) is the shrinkage rate s_k
 // that drives the DEM's liquid level (D-4, paper Eq. 15).
 #pragma once
-#include "drydem/dryer/nmp_properties.hpp"
+#include "drydem/dryer_model/nmp_properties.hpp"
 #include <optional>
 #include <span>
 #include <string>
@@ -27,43 +27,45 @@ struct DryerZone {
     double heat_transfer_top = 40.0;  ///< α_top,k [W m^-2 K^-1]
 };
 
-/// Every parameter of the model (dryer.md D-3), SI. The defaults are preset `physical` for the
-/// paper's 20.1 mg/cm2 film; film_dryer_preset() gives the named presets.
+/// Every parameter of the model (dryer.md D-3), SI. The members marked (config) mirror a key of the
+/// run configuration and have no default here: the defaults are the configuration's, declared once
+/// (io/config_keys.def); build the struct with film_dryer_params(config) or film_dryer_preset(name)
+/// (dryer_model/dryer_config.hpp). The others are the model's own constants.
 struct FilmDryerParams {
-    std::string preset = "physical";   ///< recorded in every output (D-8.2)
+    std::string preset;                  ///< (config) recorded in every output (D-8.2)
     // formulation (paper Table 1, Sec. 7, Eq. 4)
-    double w_ncm = 0.94, w_pvdf = 0.03, w_cb = 0.03;        ///< solids mass fractions
-    double rho_ncm = 4740.0, rho_pvdf = 1780.0, rho_cb = 1660.0; ///< [kg/m^3]
+    double w_ncm{}, w_pvdf{}, w_cb{};    ///< (config) solids mass fractions
+    double rho_ncm{}, rho_pvdf{}, rho_cb{}; ///< (config) [kg/m^3]
     double cp_ncm = 750.0, cp_pvdf = 1300.0, cp_cb = 710.0; ///< [J kg^-1 K^-1] (A)
-    double areal_loading = 0.201;        ///< L, dry mass per area [kg/m^2]
-    double solids_mass_fraction = 0.70;  ///< x_s of the slurry
-    double liquid_density = 1030.0;      ///< ρ_l used for the thickness [kg/m^3] (D-2.5)
+    double areal_loading{};              ///< (config) L, dry mass per area [kg/m^2]
+    double solids_mass_fraction{};       ///< (config) x_s of the slurry
+    double liquid_density{};             ///< (config) ρ_l used for the thickness [kg/m^3] (D-2.5)
     bool liquid_density_temperature = false; ///< use ρ_l(T) (D-5.6) instead (off, D-2.5)
     // substrate (A3: Al foil)
-    double substrate_thickness = 20e-6;  ///< d_sub [m]
-    double substrate_density = 2700.0;   ///< [kg/m^3]
-    double substrate_heat_capacity = 900.0; ///< [J kg^-1 K^-1]
+    double substrate_thickness{};        ///< (config) d_sub [m]
+    double substrate_density{};          ///< (config) [kg/m^3]
+    double substrate_heat_capacity{};    ///< (config) [J kg^-1 K^-1]
     // dryer (paper Sec. 5, Table A1)
-    double line_speed = 2.0 / 60.0;      ///< v_l [m/s]
-    std::vector<DryerZone> zones = {{2.0, 353.15, 40.0}, {2.0, 373.15, 40.0}, {2.0, 393.15, 55.0}};
-    double bottom_factor = 1.0;          ///< α_bot = factor · α_top (A1, decisive, D-2.2)
-    double supply_air_solvent = 0.0;     ///< ỹ_∞, NMP mole fraction in the supply air (A2)
+    double line_speed{};                 ///< (config) v_l [m/s]
+    std::vector<DryerZone> zones;        ///< (config)
+    double bottom_factor{};              ///< (config) α_bot = factor · α_top (A1, decisive, D-2.2)
+    double supply_air_solvent{};         ///< (config) ỹ_∞, NMP mole fraction in the supply air (A2)
     double pressure = constants::atmospheric_pressure; ///< p [Pa]
-    double analogy_exponent = 1.0 / 3.0; ///< n in β = α/(ρ c_p) Le^(n-1) (D-2.4)
+    double analogy_exponent{};           ///< (config or preset) n in β = α/(ρ c_p) Le^(n-1) (D-2.4)
     bool stefan = true;                  ///< Stefan (log) form of the driving force (D-2.3)
-    bool ackermann = false;              ///< Ackermann correction of the top heat flux (D-2.2)
-    Antoine vapour_pressure = antoine_anchored; ///< D-5.1
-    double initial_temperature = 298.15; ///< T_0 of the film at the dryer inlet [K] (A4)
+    bool ackermann = false;              ///< (config) Ackermann correction of the top heat flux (D-2.2)
+    Antoine vapour_pressure = antoine_anchored; ///< (config) D-5.1
+    double initial_temperature{};        ///< (config) T_0 of the film at the dryer inlet [K] (A4)
     // end of shrinkage (from the DEM, D-6)
-    double final_porosity = 0.44;        ///< ε_f
+    double final_porosity{};             ///< (config) ε_f
     double tortuosity = 2.0;             ///< τ of the dry layer after consolidation (A6)
     // numerics (D-2.7)
-    double time_step = 0.02;             ///< RK4 step [s], ≤ 0.05 s
+    double time_step{};                  ///< (config) RK4 step [s], ≤ 0.05 s
 };
 
-/// Presets of D-3: "physical" (Chilton-Colburn n = 1/3) and "table2" (n = 0.42, calibrated to
-/// paper Table 2). Throws InputError for any other name.
-[[nodiscard]] FilmDryerParams film_dryer_preset(std::string_view name);
+/// The analogy exponent n of a preset of D-3: "physical" (Chilton-Colburn, 1/3) and "table2"
+/// (0.42, calibrated to paper Table 2). Throws InputError for any other name.
+[[nodiscard]] double preset_analogy_exponent(std::string_view preset);
 
 /// Derived film quantities (D-2.1, D-2.5, paper Eqs. 3-4).
 struct FilmGeometry {

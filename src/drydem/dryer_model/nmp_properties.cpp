@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/dryer/nmp_properties.hpp"
+#include "drydem/dryer_model/nmp_properties.hpp"
 #include <cmath>
 
 namespace drydem::dryer {

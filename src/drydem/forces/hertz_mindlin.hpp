@@ -35,6 +35,18 @@ inline double damping_ratio(double restitution) {
     return -l / std::sqrt(l * l + std::numbers::pi * std::numbers::pi);
 }
 
+/// Rayleigh wave time π r sqrt(ρ/G) / (0.1631 ν + 0.8766), G = E / (2(1+ν)) [s]: the classic DEM
+/// step scale of a contact (model.md M-9.2), printed by `drydem check`.
+inline double rayleigh_time(double r, double density, double youngs_modulus, double poisson_ratio) {
+    const double g = youngs_modulus / (2.0 * (1.0 + poisson_ratio));
+    return std::numbers::pi * r * std::sqrt(density / g) / (0.1631 * poisson_ratio + 0.8766);
+}
+
+/// Duration of an elastic Hertz collision 2.868 (m*² / (R* E*² v))^{1/5} [s] (M-9.2).
+inline double hertz_contact_time(double m_eff, double r_eff, double e_star, double impact_speed) {
+    return 2.868 * std::pow(m_eff * m_eff / (r_eff * e_star * e_star * impact_speed), 0.2);
+}
+
 /// E* and G* of two materials (M-2.1).
 inline HertzMindlinParams mix_hertz_mindlin(double e_i, double nu_i, double e_j, double nu_j,
                                             double restitution, double friction,

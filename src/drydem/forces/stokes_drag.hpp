@@ -21,6 +21,11 @@ inline double stokes_drag_coefficient(double r, const StokesDragParams& p) {
     return 6.0 * std::numbers::pi * p.viscosity * r;
 }
 
+/// Relaxation time m / (6π(η/b) r) of the drag [s]; an explicit kick needs Δt < 2 m/(6π(η/b) r).
+inline double stokes_relaxation_time(double mass, double r, const StokesDragParams& p) {
+    return mass / stokes_drag_coefficient(r, p);
+}
+
 /// The law's resistance (resistance.hpp body form): a_z = a_t = 6π(η/b) r, d_t = d_z = 8π(η/b) r³
 /// (rotation only when enabled).
 inline BodyResistance stokes_drag_resistance(double r, const StokesDragParams& p) {

@@ -63,6 +63,7 @@ const std::array kSymbols{
     Symbol{"eV", {1.602176634, 1, -19, ENERGY}, false},
     Symbol{"W", {1, 1, 0, {2, 1, -3, 0, 0}}, true},
     Symbol{"V", {1, 1, 0, {2, 1, -3, 0, 0, -1}}, true},
+    Symbol{"S", {1, 1, 0, {-2, -1, 3, 0, 0, 2}}, true}, // siemens = A/V
     Symbol{"L", {1, 1, -3, {3, 0, 0, 0, 0}}, true},
     Symbol{"%", {1, 1, -2, kNone}, false},
 };
@@ -75,7 +76,7 @@ const std::array kPrefixes{Prefix{"f", -15}, Prefix{"p", -12}, Prefix{"n", -9}, 
                            Prefix{"µ", -6},  Prefix{"μ", -6},   Prefix{"m", -3}, Prefix{"c", -2},
                            Prefix{"k", 3},   Prefix{"M", 6},    Prefix{"G", 9},  Prefix{"T", 12}};
 
-constexpr std::array<Dims, 19> kExpected{{
+constexpr std::array<Dims, 21> kExpected{{
     kNone,                // dimensionless
     L,                    // length
     T,                    // time
@@ -95,23 +96,27 @@ constexpr std::array<Dims, 19> kExpected{{
     {0, 1, -3, -1, 0},    // heat transfer coefficient
     {2, 0, -2, -1, 0},    // specific heat
     {2, 1, -3, 0, 0, -1}, // electric potential
+    {-3, -1, 3, 0, 0, 2}, // electrical conductivity
+    {2, 0, -1, 0, 0},     // diffusivity
 }};
-constexpr std::array<std::string_view, 19> kNames{
+constexpr std::array<std::string_view, 21> kNames{
     "dimensionless",  "length",          "time",          "mass",
     "velocity",       "acceleration",    "density",       "pressure",
     "viscosity",      "surface tension", "energy",        "force",
     "areal density",  "temperature",     "angle",         "frequency",
-    "heat transfer coefficient",         "specific heat capacity", "electric potential"};
+    "heat transfer coefficient",         "specific heat capacity", "electric potential",
+    "electrical conductivity",           "diffusivity"};
 // The SI unit of each dimension, as parse_quantity reads it ("" for plain numbers).
-constexpr std::array<std::string_view, 19> kSiUnits{
+constexpr std::array<std::string_view, 21> kSiUnits{
     "",     "m",     "s",      "kg",     "m/s",    "m/s^2", "kg/m^3",         "Pa",            "Pa*s", "N/m",
-    "J",    "N",     "kg/m^2", "K",      "rad",    "Hz",    "W/(m^2*K)",      "J/(kg*K)",      "V"};
+    "J",    "N",     "kg/m^2", "K",      "rad",    "Hz",    "W/(m^2*K)",      "J/(kg*K)",      "V",
+    "S/m",  "m^2/s"};
 // Unit used in the "e.g." part of error messages, with its decimal exponent (0 = SI already).
 struct Example {
     std::string_view unit;
     int pow10;
 };
-constexpr std::array<Example, 19> kExamples{{{"", 0},
+constexpr std::array<Example, 21> kExamples{{{"", 0},
                                              {"um", -6},
                                              {"s", 0},
                                              {"mg", -6},
@@ -129,7 +134,9 @@ constexpr std::array<Example, 19> kExamples{{{"", 0},
                                              {"Hz", 0},
                                              {"W/(m^2*K)", 0},
                                              {"J/(kg*K)", 0},
-                                             {"mV", -3}}};
+                                             {"mV", -3},
+                                             {"S/m", 0},
+                                             {"m^2/s", 0}}};
 
 std::size_t index(Dimension d) { return static_cast<std::size_t>(d); }
 
@@ -517,6 +524,8 @@ std::string format_quantity(double si, Dimension d) {
     case D::heat_transfer_coefficient: c = {"W/(m^2*K)", 1}; break;
     case D::specific_heat: c = {"J/(kg*K)", 1}; break;
     case D::electric_potential: c = pick(si, potential); break;
+    case D::electrical_conductivity: c = {"S/m", 1}; break;
+    case D::diffusivity: c = {"m^2/s", 1}; break;
     }
     return fmt::format("{:.6g} {}", si / c.scale, c.unit);
 }

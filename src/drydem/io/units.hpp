@@ -33,6 +33,8 @@ enum class Dimension {
     heat_transfer_coefficient, ///< W/(m^2 K), dryer zones
     specific_heat,             ///< J/(kg K), dryer model
     electric_potential,        ///< V, double-layer repulsion
+    electrical_conductivity,   ///< S/m, transport solves of the analysis
+    diffusivity,               ///< m^2/s, binder migration of the analysis
 };
 
 /// Human name, e.g. "areal density".

@@ -99,23 +99,24 @@ nlohmann::ordered_json voxel_change_json(const Transport& t) {
             {"cb_network_conductivity", change(f.cb_z.sigma_eff, c.cb_z.sigma_eff)}};
 }
 
-/// τ and σ_eff extrapolated to zero voxel size from the solved levels (Richardson).
+/// τ and σ_eff extrapolated to zero voxel size from the solved levels (Richardson); the observed
+/// order is that of the through-plane τ.
 nlohmann::ordered_json extrapolated_json(const Transport& t) {
     std::vector<double> h;
     for (const TransportLevel& l : t.levels) h.push_back(l.voxel);
-    auto field = [&](auto get) {
+    auto extrapolate = [&](auto get) {
         std::vector<double> v;
         for (const TransportLevel& l : t.levels) v.push_back(get(l));
-        const Extrapolation e = extrapolate_to_zero_voxel(h, v);
+        return extrapolate_to_zero_voxel(h, v);
+    };
+    auto value = [](const Extrapolation& e) {
         return std::isfinite(e.value) ? nlohmann::ordered_json(e.value) : nlohmann::ordered_json();
     };
-    std::vector<double> tz;
-    for (const TransportLevel& l : t.levels) tz.push_back(l.tau_z);
-    const Extrapolation e = extrapolate_to_zero_voxel(h, tz);
-    return {{"tortuosity_through_plane", field([](const TransportLevel& l) { return l.tau_z; })},
-            {"tortuosity_in_plane", field([](const TransportLevel& l) { return 0.5 * (l.tau_x + l.tau_y); })},
-            {"electronic_conductivity_S_m", field([](const TransportLevel& l) { return l.electronic_z.sigma_eff; })},
-            {"observed_order", e.order_observed ? nlohmann::ordered_json(e.order) : nlohmann::ordered_json()}};
+    const Extrapolation tau_z = extrapolate([](const TransportLevel& l) { return l.tau_z; });
+    return {{"tortuosity_through_plane", value(tau_z)},
+            {"tortuosity_in_plane", value(extrapolate([](const TransportLevel& l) { return 0.5 * (l.tau_x + l.tau_y); }))},
+            {"electronic_conductivity_S_m", value(extrapolate([](const TransportLevel& l) { return l.electronic_z.sigma_eff; }))},
+            {"observed_order", tau_z.order_observed ? nlohmann::ordered_json(tau_z.order) : nlohmann::ordered_json()}};
 }
 
 nlohmann::ordered_json transport_json(const Transport& t) {
