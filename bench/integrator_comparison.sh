@@ -8,14 +8,15 @@
 # usage: bench/integrator_comparison.sh [RUN...]
 #   RUN  names from the matrix below (default: all); runs that already completed are skipped, so
 #        the script resumes, and two instances with disjoint RUN lists use both cores.
-# environment: THREADS (1), OUT (results/integrator_comparison)
+# environment: THREADS (1), OUT (results/integrator_comparison), DRYDEM (build/drydem; a copy
+#   keeps the runs on one binary while the tree is rebuilt)
 # Each completed run's small files (config, summary, analysis JSON, profiles, the thickness
 # time series thinned to <= 500 rows) are copied to docs/data/integrator_comparison/RUN so the
 # table can be rebuilt from a clean clone: the explicit runs take ~1.5-2 h each on one core.
 # Needs: build/drydem (README).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-drydem=$here/build/drydem
+drydem=${DRYDEM:-$here/build/drydem}
 threads=${THREADS:-1}
 out=${OUT:-$here/results/integrator_comparison}
 archive=$here/docs/data/integrator_comparison
