@@ -31,13 +31,7 @@ LAYERS = [
 ]
 
 # (including file relative to src/drydem, included folder): why it is still there.
-KNOWN_EXCEPTIONS = {
-    ("setup/derived_checks.cpp", "drying"):
-        "the derived checks estimate the steps from the scaled parameters (drying/scaling) and "
-        "take the widest pair's reach from the force field set up there; "
-        "scale_parameters() belongs below setup once the scaling and the force-field set-up are "
-        "split (issue 12, item 2)",
-}
+KNOWN_EXCEPTIONS = {}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"drydem/([^/"]+)/')
 

@@ -5,7 +5,7 @@
 // box and the NCM is one class of 3 um spheres, so that the film is still ~4 NCM diameters thick
 // and the end criterion (top - level > largest diameter) keeps its meaning. Physics, scaling and
 // time step are the paper's.
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/io/particle_io.hpp"

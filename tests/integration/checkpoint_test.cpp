@@ -3,7 +3,7 @@
 // the serialized state continues bit for bit like the one that never stopped, with every drying
 // force law on (contact histories, lubrication, capillary front, substrate); damaged or foreign
 // files are refused with a clear error.
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/drying/liquid_level.hpp"
 #include "drydem/drying/scaling.hpp"

@@ -4,7 +4,7 @@
 // every mistake is an InputError naming the key, the value and what is allowed. check_calibration
 // adds the checks drydem calibrate needs (a parameter and a target at least, valid runs at the
 // bounds) and the warning for fewer independent targets than parameters.
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/study/calibration.hpp"

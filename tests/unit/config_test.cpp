@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Configuration parsing (interface.md "Config"): the embedded default equals Config{}, every
 // example parses, and bad input throws InputError naming the key, the value and what is allowed.
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/io/config_schema.hpp"

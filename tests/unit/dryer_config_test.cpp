@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The [dryer] keys of the dryer model: defaults, units ("80 degC", "40 W/(m^2*K)"), the mapping
 // to FilmDryerParams, and every bad-input rule (InputError naming key, value and what is allowed).
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/dryer_model/dryer_config.hpp"
 #include "drydem/io/config.hpp"

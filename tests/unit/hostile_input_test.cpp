@@ -6,7 +6,7 @@
 #include "drydem/io/config.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/io/units.hpp"
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "test_dirs.hpp"
 #include <gtest/gtest.h>
 #include <cmath>

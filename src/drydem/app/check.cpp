@@ -6,7 +6,7 @@
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/drying/stability_clusters.hpp"
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <fmt/format.h>
 #include <algorithm>

@@ -9,7 +9,7 @@
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/io/output_folder.hpp"
 #include "drydem/io/units.hpp"
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
 #include "drydem/git_hash.hpp"

@@ -94,7 +94,7 @@ struct ParsedConfig {
 /// InputError naming the key, the value and what is allowed). `overrides` are "dotted.key=value"
 /// strings applied on top (value parsed as TOML, else taken as a string). What the keys imply
 /// together (particle counts, steps, memory) is checked a layer up: load_config
-/// (setup/derived_checks.hpp) is what the commands read.
+/// (drying/derived_checks.hpp) is what the commands read.
 ParsedConfig parse_config(std::string_view toml_text, std::string_view source_name,
                           const std::vector<std::string>& overrides = {});
 /// The text of a config file; InputError naming it where it cannot be read.

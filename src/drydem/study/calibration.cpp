@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "drydem/setup/derived_checks.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/study/calibration.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/units.hpp"
