@@ -78,7 +78,12 @@ def main():
             sds = [x for x in (stats[ref][1], stats[n][1]) if x == x]  # a one-seed group has none
             spread = max(sds) if sds else float("nan")
             cells.append(f"{d:+.3g}")
-            cells.append("yes" if abs(d) <= spread else f"no ({abs(d) / spread:.1f} s.d.)")
+            if abs(d) <= spread or abs(d) <= 1e-12 * abs(stats[ref][0]):  # inside, or rounding
+                cells.append("yes")
+            elif spread > 0:
+                cells.append(f"no ({abs(d) / spread:.1f} s.d.)")
+            else:  # every seed gave the same value (a voxel-quantised peak, say)
+                cells.append("no (no spread)")
         lines.append(f"| {label} | " + " | ".join(cells) + " |")
     open(prefix + ".md", "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
