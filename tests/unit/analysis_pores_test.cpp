@@ -270,3 +270,69 @@ TEST(Analyze, PipelineOnABooleanFilm) {
         EXPECT_NE(std::string(e.what()).find("choose a coarser voxel size"), std::string::npos) << e.what();
     }
 }
+
+TEST(LocalThickness, PaintedBallsEqualBruteForceAcrossSeamsAndLayers) {
+    // Every voxel gets the largest r² of the balls {|p − c|² < r²(c)} that cover it, x and y
+    // periodic: the pruned centres, the unwrapped interior test and the seams' wrapped test must
+    // all agree with painting every centre. Boolean pores on a grid small enough for brute force.
+    for (const std::uint64_t seed : {11u, 12u, 13u, 14u}) {
+    const Structure s = boolean_model(2.0e-6, 1.6e-6, 0.3e-6, 0.7, seed);
+    const VoxelGrid g = voxelize(s, 0.1e-6, 1.6e-6);
+    ASSERT_EQ(g.nx, 20);
+    const auto d2 = squared_distance_to_solid(g);
+    const auto lt = local_thickness(g, d2);
+    std::size_t mismatches = 0, painted = 0;
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                std::uint16_t best = 0;
+                for (int kc = 0; kc < g.nz; ++kc)
+                    for (int jc = 0; jc < g.ny; ++jc)
+                        for (int ic = 0; ic < g.nx; ++ic) {
+                            const std::uint16_t v = d2[g.index(ic, jc, kc)];
+                            if (v <= best) continue;
+                            int di = std::abs(i - ic), dj = std::abs(j - jc);
+                            di = std::min(di, g.nx - di);
+                            dj = std::min(dj, g.ny - dj);
+                            if (di * di + dj * dj + (k - kc) * (k - kc) < int(v)) best = v;
+                        }
+                painted += best > 0;
+                mismatches += lt[g.index(i, j, k)] != best;
+            }
+    EXPECT_EQ(mismatches, 0u) << "seed " << seed;
+    EXPECT_GT(painted, g.size() / 2); // the test paints a real pore space
+    }
+}
+
+TEST(Analyze, TransportAlongsidePoreSizesGivesTheSequentialResults) {
+    // With both parts on, the transport solves run in a thread of their own beside the pore-size
+    // pipeline; every number must equal those of each part run alone (sequentially).
+    const Structure s = boolean_model(4e-6, 3e-6, 0.5e-6, 0.5, 5);
+    AnalysisOptions both;
+    both.voxel = 0.1e-6;
+    both.transport.voxels = {0.4e-6, 0.2e-6};
+    both.transport.walkers = 200;
+    both.transport.walk_steps = 200;
+    AnalysisOptions transport_only = both, pores_only = both;
+    transport_only.voxel = 0.0;
+    pores_only.transport.voxels.clear();
+    const AnalysisResult r = analyze_structure(s, both);
+    const AnalysisResult t = analyze_structure(s, transport_only);
+    const AnalysisResult p = analyze_structure(s, pores_only);
+    ASSERT_TRUE(r.transport && t.transport && r.voxelized && p.voxelized);
+    EXPECT_TRUE(r.transport->alongside_pore_sizes);
+    EXPECT_FALSE(t.transport->alongside_pore_sizes);
+    ASSERT_EQ(r.transport->levels.size(), t.transport->levels.size());
+    for (std::size_t m = 0; m < r.transport->levels.size(); ++m) {
+        const TransportLevel &a = r.transport->levels[m], &b = t.transport->levels[m];
+        EXPECT_EQ(a.pore_z.sigma_eff, b.pore_z.sigma_eff);
+        EXPECT_EQ(a.pore_x.sigma_eff, b.pore_x.sigma_eff);
+        EXPECT_EQ(a.electronic_z.sigma_eff, b.electronic_z.sigma_eff);
+        EXPECT_EQ(a.cb_z.sigma_eff, b.cb_z.sigma_eff);
+        EXPECT_EQ(a.walk.diffusivity[0], b.walk.diffusivity[0]);
+    }
+    EXPECT_GT(r.transport->reported().pore_z.sigma_eff, 0.0);
+    EXPECT_EQ(r.psd.volume, p.psd.volume);
+    EXPECT_EQ(r.psd.intruded, p.psd.intruded);
+    EXPECT_EQ(r.voxel_porosity, p.voxel_porosity);
+}

@@ -14,9 +14,7 @@
 
 namespace drydem::analysis {
 
-namespace {
-
-void start_mpi_once() {
+void start_amg_solver() {
     static std::once_flag once;
     std::call_once(once, [] {
         int initialised = 0;
@@ -25,13 +23,17 @@ void start_mpi_once() {
             // One rank talks only to itself: skip the probing of networks (and its warnings on
             // machines without them). A user's own OMPI_MCA_btl wins.
             setenv("OMPI_MCA_btl", "self", 0);
+            // Serialized: the solves may run in a thread other than the one that started MPI (the
+            // analysis overlaps them with the pore sizes), never two at once.
             int provided = 0;
-            if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
+            if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided) != MPI_SUCCESS)
                 throw InputError("conduction solve: MPI (needed by hypre) did not start");
         }
         HYPRE_Init();
     });
 }
+
+namespace {
 
 /// Heap bytes in use by this process (glibc's count; 0 where a sanitizer replaces malloc).
 std::size_t heap_in_use() {
@@ -116,7 +118,7 @@ AmgSolve solve_amg_pcg(const CsrMatrix& A, const std::vector<double>& b, const s
     if (A.n < 1 || b.size() != std::size_t(A.n) || guess.size() != std::size_t(A.n))
         throw InputError(fmt::format("AMG solve: {} unknowns with {} right-hand sides and {} guesses", A.n,
                                      b.size(), guess.size()));
-    start_mpi_once();
+    start_amg_solver();
     const std::size_t heap0 = heap_in_use();
     HypreSystem s;
     fill_matrix(s, A);

@@ -30,6 +30,10 @@ struct AmgSolve {
     std::size_t memory_bytes = 0;   ///< heap held by hypre at the end: matrix copy, hierarchy, vectors
 };
 
+/// Starts MPI (one rank, for hypre) and hypre once per process; solve_amg_pcg calls it too. Call it
+/// from the main thread before solving in another one.
+void start_amg_solver();
+
 /// Solves A x = b from the first guess to the relative residual `tolerance`.
 [[nodiscard]] AmgSolve solve_amg_pcg(const CsrMatrix& A, const std::vector<double>& b,
                                      const std::vector<double>& guess, double tolerance, int max_iterations);

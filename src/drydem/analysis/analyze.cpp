@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/analysis/analyze.hpp"
+#include "drydem/analysis/amg_solver.hpp"
 #include "drydem/analysis/distance_transform.hpp"
 #include "drydem/analysis/pore_size.hpp"
 #include "drydem/core/error.hpp"
@@ -7,6 +8,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
+#include <omp.h>
 #include <unistd.h>
 
 namespace drydem::analysis {
@@ -149,36 +152,9 @@ void pore_sizes(AnalysisResult& r, VoxelGrid& g, const AnalysisOptions& o, std::
     r.psd.mip_median = median_of(r.psd.intruded);
 }
 
-} // namespace
-
-AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
-    auto say = [&](const std::string& m) {
-        if (o.log) o.log(m);
-    };
-    if (!(o.profile_dz > 0.0)) throw InputError(fmt::format("profile slab width {} m: must be positive", o.profile_dz));
-    if (o.pore_top != "half_solid" && o.pore_top != "highest")
-        throw InputError(fmt::format("pore top '{}': allowed are 'half_solid' and 'highest'", o.pore_top));
-    AnalysisResult r;
-    const double top = highest_top(s);
-    r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
-    r.bulk = bulk_properties(s, r.profiles.solid(), o.profile_dz);
-    r.coordination = coordination(s, o.contact_gap);
-    r.base_area = s.box.area();
-    r.surfaces = ncm_surfaces(s, o.surfaces);
-    // Transport on its own (coarser) voxelizations of the coating below the pore top.
-    if (!o.transport.voxels.empty()) {
-        TransportOptions to = o.transport;
-        to.log = o.log;
-        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
-        r.transport = film_transport(s, coating_top, to);
-    }
-    if (!o.timeseries.empty()) {
-        const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
-        analyze_binder(r, o, coating_top, say);
-    }
-    if (!(o.voxel > 0.0)) return r;
-
-    check_voxel_memory(s, o, top);
+/// The voxel image at analysis.voxel_size: porosity split, chord lengths, pore sizes.
+template <class Say>
+void voxel_pipeline(AnalysisResult& r, const Structure& s, const AnalysisOptions& o, double top, Say&& say) {
     auto t = std::chrono::steady_clock::now();
     r.voxelized = true;
     VoxelGrid g = voxelize(s, o.voxel, top);
@@ -206,6 +182,64 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
 
     pore_sizes(r, g, o, t, say);
     if (o.keep_grid) r.grid = std::move(g);
+}
+
+/// Whether the transport solves and the voxel pipeline fit in memory at the same time (half of
+/// this machine's memory, as a margin for the particles and everything else).
+bool fit_together(const Structure& s, const AnalysisOptions& o, double top, double coating_top) {
+    const double need = voxel_analysis_bytes * double(voxel_count(s, o.voxel, top)) +
+                        transport_peak_bytes(s, coating_top, o.transport);
+    const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    return have > 0.0 && need <= 0.5 * have;
+}
+
+} // namespace
+
+AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
+    auto say = [&](const std::string& m) {
+        if (o.log) o.log(m);
+    };
+    if (!(o.profile_dz > 0.0)) throw InputError(fmt::format("profile slab width {} m: must be positive", o.profile_dz));
+    if (o.pore_top != "half_solid" && o.pore_top != "highest")
+        throw InputError(fmt::format("pore top '{}': allowed are 'half_solid' and 'highest'", o.pore_top));
+    AnalysisResult r;
+    const double top = highest_top(s);
+    r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
+    r.bulk = bulk_properties(s, r.profiles.solid(), o.profile_dz);
+    r.coordination = coordination(s, o.contact_gap);
+    r.base_area = s.box.area();
+    r.surfaces = ncm_surfaces(s, o.surfaces);
+    // Transport (tortuosity, conductivities) on its own coarser voxelizations, then the binder
+    // migration that takes its Bruggeman exponent. Its AMG solves run on one core, so while the
+    // pore-size pipeline below (OpenMP on all cores) runs it goes on in a thread of its own when
+    // both fit in memory together: each part is deterministic and writes only its own members of
+    // `r`, so the results are those of the sequential order.
+    const double coating_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
+    const int threads = omp_get_max_threads(); // a new thread starts from OpenMP's defaults
+    auto transport_and_binder = [&r, &s, &o, coating_top, threads, say] {
+        omp_set_num_threads(threads);
+        if (!o.transport.voxels.empty()) {
+            TransportOptions to = o.transport;
+            to.log = o.log;
+            r.transport = film_transport(s, coating_top, to);
+        }
+        if (!o.timeseries.empty()) analyze_binder(r, o, coating_top, say);
+    };
+    const bool voxels = o.voxel > 0.0;
+    if (voxels) check_voxel_memory(s, o, top);
+    const bool together = voxels && !o.transport.voxels.empty() && fit_together(s, o, top, coating_top);
+    std::future<void> background;
+    if (together) {
+        start_amg_solver(); // MPI starts in this thread
+        background = std::async(std::launch::async, transport_and_binder);
+    } else {
+        transport_and_binder();
+    }
+    if (voxels) voxel_pipeline(r, s, o, top, say);
+    if (background.valid()) {
+        background.get();
+        if (r.transport) r.transport->alongside_pore_sizes = true;
+    }
     return r;
 }
 

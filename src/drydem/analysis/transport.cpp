@@ -63,6 +63,15 @@ double finest_solvable(const Structure& s, double top, const TransportOptions& o
 
 } // namespace
 
+double transport_peak_bytes(const Structure& s, double top, const TransportOptions& o) {
+    std::size_t largest = 0;
+    for (double a : o.voxels) {
+        const std::size_t count = voxel_count(s, a, top);
+        if (count <= o.max_voxels) largest = std::max(largest, count);
+    }
+    return transport_bytes_per_voxel * double(largest);
+}
+
 Transport film_transport(const Structure& s, double top, const TransportOptions& o) {
     Transport t;
     t.top = top;

@@ -20,13 +20,18 @@
 
 namespace drydem::analysis {
 
+/// Peak bytes of one solve per voxel of its image (AMG hierarchy, matrix, vectors, labels): the
+/// main job's solid solve at 0.4 um held 2.58 GB for 7.7e6 voxels (335 B), rounded up.
+inline constexpr double transport_bytes_per_voxel = 400.0;
+
 struct TransportOptions {
     std::vector<double> voxels{0.4e-6, 0.2e-6}; ///< voxel edges [m]; the last one is reported; empty = none
     double sigma_ncm = 1.0e-2;  ///< electronic conductivity of NCM [S/m] (input)
     double sigma_cb = 100.0;    ///< electronic conductivity of a CB agglomerate (carbon + binder + pores) [S/m] (input)
     double tolerance = 1e-7;    ///< CG relative residual
     /// A voxel size whose image has more voxels is skipped (and said so): one solve holds ~400
-    /// bytes per voxel at its peak (AMG hierarchy), so 2.5e7 voxels stay near 10 GB.
+    /// bytes per voxel at its peak (AMG hierarchy, transport_bytes_per_voxel), so 2.5e7 voxels
+    /// stay near 10 GB.
     std::size_t max_voxels = 25'000'000;
     bool in_plane = true;       ///< also τ along x and y
     /// Second method at the reported voxel size: random walks in the pores, in-plane (x, y
@@ -61,6 +66,9 @@ struct Transport {
     std::size_t max_voxels = 0;
     double top = 0.0;                   ///< top of the solved coating [m]
     double sigma_ncm = 0.0, sigma_cb = 0.0;
+    /// Solved alongside the pore sizes (analyze.cpp): the levels' seconds are then shared cores and
+    /// their memory_bytes, the heap's growth during a solve, includes the pore sizes' (an upper bound).
+    bool alongside_pore_sizes = false;
     [[nodiscard]] bool solved() const { return !levels.empty(); }
     /// The finest solved level; only where solved().
     [[nodiscard]] const TransportLevel& reported() const { return levels.back(); }
@@ -83,5 +91,9 @@ struct Extrapolation {
 [[nodiscard]] double bruggeman_exponent(double porosity, double tau);
 
 [[nodiscard]] Transport film_transport(const Structure& s, double top, const TransportOptions& o);
+
+/// Peak bytes of `film_transport(s, top, o)`: its largest solvable image times
+/// transport_bytes_per_voxel (the levels are solved one after the other).
+[[nodiscard]] double transport_peak_bytes(const Structure& s, double top, const TransportOptions& o);
 
 } // namespace drydem::analysis

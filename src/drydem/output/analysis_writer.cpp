@@ -184,6 +184,8 @@ nlohmann::ordered_json transport_json(const Transport& t) {
                         {"seconds", l.seconds},
                         {"memory_mb", double(l.memory_bytes) / 1e6}});
     tj["convergence"] = conv;
+    // Overlapped with the pore sizes: seconds on shared cores, memory an upper bound.
+    tj["solved_alongside_pore_sizes"] = t.alongside_pore_sizes;
     tj["relative_change_from_coarser_voxels"] = voxel_change_json(t);
     tj["extrapolated_to_zero_voxel"] = extrapolated_json(t);
     tj["skipped"] = skipped_json(t);
