@@ -29,8 +29,11 @@
 namespace drydem {
 
 struct LubricationParams {
-    double viscosity = 0.0; ///< η [Pa s]; 0 = off
-    double kappa_c = 0.1;   ///< κ_c = h_c / r_L: below it every coefficient is frozen
+    double viscosity = 0.0;             ///< η [Pa s]; 0 = off
+    double kappa_c = 0.1;               ///< κ_c = h_c / r_L: below it every coefficient is frozen
+    double log_kappa_c = std::log(0.1); ///< ln κ_c, kept with κ_c by the constructor
+    LubricationParams() = default;
+    LubricationParams(double eta, double kc) : viscosity(eta), kappa_c(kc), log_kappa_c(std::log(kc)) {}
 };
 
 /// r_L = 2R* = 2 r_i r_j / (r_i + r_j) (C-15).
@@ -60,7 +63,9 @@ inline PairResistance lubrication_resistance(const PairGeometry& g, const Lubric
     const double kappa = g.gap / r_l;
     if (kappa > 1.0) return {};
     const double k_e = std::max(kappa, p.kappa_c); // freeze below h_c and in overlap
-    const double log_k = std::log(k_e), l = -log_k;
+    // Pairs in contact or within h_c all have κ_e = κ_c: their logarithm is the stored one (the
+    // same bits), which saves a log per such pair (logs dominate the cost of a dense packing).
+    const double log_k = k_e == p.kappa_c ? p.log_kappa_c : std::log(k_e), l = -log_k;
     const double pi_eta = std::numbers::pi * p.viscosity;
     const double rot = 8.0 * pi_eta * r_l * r_l * r_l * l;
     return {6.0 * pi_eta * r_l * lubrication_x(k_e, log_k) * vinogradova_factor(k_e, p.kappa_c),
