@@ -8,12 +8,12 @@
 #   CASES  quick (examples/quick.toml, 3 mg/cm2, 40 x 40 um, ~2,000 particles; default)
 #          paper40 (the paper's 20.1 mg/cm2 recipe in a 40 x 40 um box, 13,382 particles; the
 #          explicit run takes about an hour on 2 cores)
-# environment: THREADS (2), SEED (config's), OUT (results/drying_bench), INTEGRATORS
+# environment: DRYDEM (build/drydem), THREADS (2), SEED (config's), OUT (results/drying_bench), INTEGRATORS
 #   ("explicit semi_implicit")
 # Needs: build/drydem (README). Run on an otherwise idle machine.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-drydem=$here/build/drydem
+drydem=${DRYDEM:-$here/build/drydem}
 threads=${THREADS:-2}
 out=${OUT:-$here/results/drying_bench}
 integrators=${INTEGRATORS:-explicit semi_implicit}

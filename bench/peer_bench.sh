@@ -9,10 +9,13 @@
 # environment: NSTEPS (2000 for 75, 5000 for 30), NWARM (200), OUT (results/peer_bench/<size>um),
 #   REPEAT (3): rounds over all cases, interleaved; the table takes each case's best round, since a
 #   shared machine's speed drifts by tens of per cent within minutes.
+#   DRYDEM (build/drydem): the binary of the drydem cases; OLD_DRYDEM: a second binary whose cases
+#   old1 and old2 run interleaved with the others (a before/after beside the peers).
 # Needs: build/drydem (README), and `scripts/install_deps.sh --peers` for liggghts, lmp, mpirun.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 peers=$(cd "$here/../shared/peers" && pwd)
+drydem=${DRYDEM:-$here/build/drydem}
 size=${1:-75}
 shift || true
 cases=${*:-drydem1 drydem2 lig1 lig2 gran1 gran2 hh1 hh2}
@@ -36,8 +39,10 @@ for c in $cases; do
   echo "== $c (round $round)"; busy
   n="${c}_r${round}"
   case $c in
-    drydem1) OMP_NUM_THREADS=1 "$here/build/drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 1 | tee "$out/$n.json" ;;
-    drydem2) OMP_NUM_THREADS=2 "$here/build/drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 2 | tee "$out/$n.json" ;;
+    drydem1) OMP_NUM_THREADS=1 "$drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 1 | tee "$out/$n.json" ;;
+    old1) OMP_NUM_THREADS=1 "$OLD_DRYDEM" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 1 | tee "$out/$n.json" ;;
+    old2) OMP_NUM_THREADS=2 "$OLD_DRYDEM" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 2 | tee "$out/$n.json" ;;
+    drydem2) OMP_NUM_THREADS=2 "$drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 2 | tee "$out/$n.json" ;;
     lig1) (cd "$out" && liggghts -in "$peers/in.bench.liggghts" $V -log "$n.log" > "$n.screen" 2>&1) ;;
     lig2) (cd "$out" && $mpirun -np 2 liggghts -in "$peers/in.bench.liggghts" $V -log "$n.log" > "$n.screen" 2>&1) ;;
     gran1) (cd "$out" && lmp -in "$peers/in.bench.lammps" $V -var model granular -log "$n.log" > "$n.screen" 2>&1) ;;

@@ -13,10 +13,11 @@ import parse_logs  # noqa: E402
 
 out = sys.argv[1]
 runs = []  # (code, case, cores, particles, steps, seconds, rate, contacts)
-for fn in sorted(glob.glob(os.path.join(out, 'drydem*.json'))):
+for fn in sorted(glob.glob(os.path.join(out, 'drydem*.json')) + glob.glob(os.path.join(out, 'old*.json'))):
     d = json.load(open(fn))
     case = os.path.basename(fn)[:-5].split('_r')[0]
-    runs.append(('DryDEM', case, d['threads'], d['particles'], d['steps'], d['seconds'],
+    # old1/old2: a second DryDEM build (OLD_DRYDEM), not a peer
+    runs.append(('DryDEM' if case.startswith('drydem') else 'DryDEM (OLD_DRYDEM)', case, d['threads'], d['particles'], d['steps'], d['seconds'],
                  d['particle_steps_per_s'], d['contacts_per_particle']))
 for fn in sorted(glob.glob(os.path.join(out, '*.log'))):
     r = parse_logs.parse(fn)
@@ -40,6 +41,8 @@ for code, case, cores, n, steps, t, rate, cavg in rows:
     lines.append(f'| {code} | {case} | {cores} | {n} | {steps} | {t:.2f} | {rate:.4g} | {rate / cores:.4g} | {cavg:.3f} | {rounds[case]} |')
 best = {}
 for code, case, cores, n, steps, t, rate, cavg in rows:
+    if code.startswith('DryDEM') and code != 'DryDEM':
+        continue  # the older build is compared with DryDEM, not with the peers
     key = 'drydem' if code == 'DryDEM' else 'peer'
     best.setdefault((key, cores), 0.0)
     best[(key, cores)] = max(best[(key, cores)], rate / cores)
@@ -47,6 +50,11 @@ for cores in (1, 2):
     if ('drydem', cores) in best and ('peer', cores) in best:
         lines.append(f'\nDryDEM / fastest peer, per core, {cores} core(s): '
                      f'{best[("drydem", cores)] / best[("peer", cores)]:.2f}x')
+for cores in (1, 2):
+    new = [r for r in rows if r[0] == 'DryDEM' and r[2] == cores]
+    old = [r for r in rows if r[0] == 'DryDEM (OLD_DRYDEM)' and r[2] == cores]
+    if new and old:
+        lines.append(f'\nDryDEM / OLD_DRYDEM, {cores} core(s): {new[0][6] / old[0][6]:.3f}x')
 text = '\n'.join(lines)
 print(text)
 open(os.path.join(out, 'summary.md'), 'w').write(text + '\n')
