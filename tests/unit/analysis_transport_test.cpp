@@ -316,3 +316,43 @@ TEST(Transport, ExtrapolationToZeroVoxelRecoversAPowerLaw) {
     EXPECT_TRUE(std::isnan(extrapolate_to_zero_voxel({0.9, 0.4, 0.2}, {2.0, 1.8, 1.7}).value));
     EXPECT_TRUE(std::isnan(extrapolate_to_zero_voxel({0.4}, {1.0}).value));
 }
+
+TEST(Transport, WindowCarriesTheSameCurrentThroughItsSmallerArea) {
+    // The CB column of the test above lies inside a 2.4 um window at the origin, the NCM sphere
+    // outside it. Insulating NCM: the column's current is the same in the window (closed sides)
+    // and in the periodic box, so σ_eff scales with the areas, 16 / 5.76 um².
+    Structure s;
+    s.box.lx = s.box.ly = 4e-6;
+    for (int m = 0; m < 6; ++m) s.add({1e-6, 1e-6, 0.3e-6 + 1.2e-6 * m}, 0.75e-6, Phase::cb);
+    s.add({3e-6, 3e-6, 2e-6}, 1.0e-6, Phase::ncm, 4740.0);
+    TransportOptions o;
+    o.voxels = {0.3e-6, 0.2e-6}; // the window spans 8 voxels of the coarser
+    o.sigma_cb = 100.0;
+    o.sigma_ncm = 0.0;
+    o.walkers = 1000; // none in a window: its sides are walls
+    o.walk_steps = 100;
+    o.tolerance = 1e-10;
+    const Transport full = film_transport(s, 6e-6, o);
+    o.window = 2.4e-6;
+    const Transport win = film_transport(s, 6e-6, o);
+    EXPECT_EQ(full.window, 0.0);
+    EXPECT_NEAR(win.window, 2.4e-6, 1e-15);
+    const TransportLevel &F = full.reported(), &W = win.reported();
+    EXPECT_EQ(W.nx, 12);
+    EXPECT_EQ(W.ny, 12);
+    EXPECT_EQ(W.nz, F.nz);
+    EXPECT_NEAR(W.cb_z.sigma_eff, F.cb_z.sigma_eff * 16.0 / 5.76, 1e-6 * F.cb_z.sigma_eff);
+    EXPECT_EQ(W.walk.diffusivity[0], 0.0);
+    EXPECT_GT(F.walk.diffusivity[0], 0.0);
+    EXPECT_GT(W.pore_z.sigma_eff, 0.0);
+    // A window wider than the box, or narrower than 8 voxels, is refused with the key's name.
+    for (const double bad : {4.5e-6, 2.0e-6}) {
+        o.window = bad;
+        try {
+            (void)film_transport(s, 6e-6, o);
+            ADD_FAILURE() << "no error for a window of " << bad;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("analysis.transport_window"), std::string::npos) << e.what();
+        }
+    }
+}

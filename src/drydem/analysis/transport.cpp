@@ -53,12 +53,43 @@ ConductionProblem problem_of(const VoxelGrid& g, int axis, double tolerance) {
     return p;
 }
 
+/// Voxels per axis the solves at voxel size `a` use: the whole image, or its window.
+VoxelDims solved_dims(const Structure& s, double a, double top, const TransportOptions& o) {
+    VoxelDims d = voxel_dims(s, a, top);
+    if (o.window > 0.0) {
+        d.nx = std::min(d.nx, std::max(1, int(std::lround(o.window / (s.box.lx / d.nx)))));
+        d.ny = std::min(d.ny, std::max(1, int(std::lround(o.window / (s.box.ly / d.ny)))));
+    }
+    return d;
+}
+
+std::size_t solved_count(const Structure& s, double a, double top, const TransportOptions& o) {
+    const VoxelDims d = solved_dims(s, a, top, o);
+    return std::size_t(d.nx) * std::size_t(d.ny) * std::size_t(d.nz);
+}
+
 /// The last voxel size of the list within the voxel limit (the reported level), 0 if none.
 double finest_solvable(const Structure& s, double top, const TransportOptions& o) {
     double finest = 0.0;
     for (double a : o.voxels)
-        if (voxel_count(s, a, top) <= o.max_voxels) finest = a;
+        if (solved_count(s, a, top, o) <= o.max_voxels) finest = a;
     return finest;
+}
+
+/// A window must lie inside the box and span a few voxels at every solved size.
+void check_window(const Structure& s, const TransportOptions& o) {
+    if (!(o.window >= 0.0))
+        throw InputError(fmt::format("analysis.transport_window = {} um: must be >= 0 (0 = the whole box)", o.window * 1e6));
+    const double side = std::min(s.box.lx, s.box.ly);
+    if (o.window > side * (1.0 + 1e-9))
+        throw InputError(fmt::format("analysis.transport_window = {:.4g} um is wider than the box ({:.4g} x {:.4g} um); "
+                                     "allowed: 0 (the whole box) up to {:.4g} um",
+                                     o.window * 1e6, s.box.lx * 1e6, s.box.ly * 1e6, side * 1e6));
+    for (double a : o.voxels)
+        if (o.window > 0.0 && o.window < 8.0 * a)
+            throw InputError(fmt::format("analysis.transport_window = {:.4g} um spans fewer than 8 voxels of {:.3g} um; "
+                                         "allowed: 0 or at least 8 voxels of the coarsest transport voxel size",
+                                         o.window * 1e6, a * 1e6));
 }
 
 } // namespace
@@ -66,7 +97,7 @@ double finest_solvable(const Structure& s, double top, const TransportOptions& o
 double transport_peak_bytes(const Structure& s, double top, const TransportOptions& o) {
     std::size_t largest = 0;
     for (double a : o.voxels) {
-        const std::size_t count = voxel_count(s, a, top);
+        const std::size_t count = solved_count(s, a, top, o);
         if (count <= o.max_voxels) largest = std::max(largest, count);
     }
     return transport_bytes_per_voxel * double(largest);
@@ -84,9 +115,11 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
         if (o.log) o.log(m);
     };
     t.max_voxels = o.max_voxels;
+    check_window(s, o);
+    const bool windowed = o.window > 0.0;
     for (double a : o.voxels) {
         const auto t0 = std::chrono::steady_clock::now();
-        const std::size_t count = voxel_count(s, a, top);
+        const std::size_t count = solved_count(s, a, top, o);
         if (count > o.max_voxels) {
             t.skipped.push_back({a, count});
             say(fmt::format("transport {:.3g} um: skipped, {} voxels > analysis.transport_max_voxels = {}", a * 1e6,
@@ -94,13 +127,18 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
             continue;
         }
         TransportLevel L;
-        const VoxelGrid g = voxelize(s, a, top);
+        const VoxelDims w = solved_dims(s, a, top, o);
+        const VoxelGrid g = windowed ? crop_xy(voxelize(s, a, top), w.nx, w.ny) : voxelize(s, a, top);
         L.voxel = g.az;
         L.nx = g.nx;
         L.ny = g.ny;
         L.nz = g.nz;
         const std::size_t nv = g.size();
         ConductionProblem p = problem_of(g, 2, o.tolerance);
+        if (windowed) {
+            p.periodic = {false, false, false}; // the window's sides are cut: no flux through them
+            t.window = g.nx * g.ax;
+        }
         p.sigma.resize(nv);
         std::size_t pores = 0;
         for (std::size_t i = 0; i < nv; ++i) {
@@ -127,7 +165,7 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
             L.tau_x = tortuosity_factor(L.porosity, L.pore_x.sigma_eff);
             L.tau_y = tortuosity_factor(L.porosity, L.pore_y.sigma_eff);
         }
-        if (o.walkers > 0 && o.walk_steps > 0 && a == finest_solvable(s, top, o)) {
+        if (o.walkers > 0 && o.walk_steps > 0 && !windowed && a == finest_solvable(s, top, o)) {
             p.periodic = {true, true, false};
             L.walk = random_walk(p, o.walkers, o.walk_steps);
             say(fmt::format("transport {:.3g} um, random walks in the pores: tau x {:.4g} +- {:.2g}, y {:.4g} +- {:.2g} "

@@ -34,6 +34,10 @@ struct TransportOptions {
     /// stay near 10 GB.
     std::size_t max_voxels = 25'000'000;
     bool in_plane = true;       ///< also τ along x and y
+    /// Lateral side of the window the solves run on [m] (its corner at the origin, sides closed
+    /// instead of periodic, no random walks): a finer voxel size fits in memory on a part of a
+    /// large film. 0 = the whole box.
+    double window = 0.0;
     /// Second method at the reported voxel size: random walks in the pores, in-plane (x, y
     /// periodic, substrate and top walls; random_walk.hpp). 0 walkers = none.
     long walkers = 20000, walk_steps = 20000;
@@ -69,6 +73,7 @@ struct Transport {
     /// Solved alongside the pore sizes (analyze.cpp): the levels' seconds are then shared cores and
     /// their memory_bytes, the heap's growth during a solve, includes the pore sizes' (an upper bound).
     bool alongside_pore_sizes = false;
+    double window = 0.0;                ///< lateral side of the solved window [m]; 0 = whole box
     [[nodiscard]] bool solved() const { return !levels.empty(); }
     /// The finest solved level; only where solved().
     [[nodiscard]] const TransportLevel& reported() const { return levels.back(); }

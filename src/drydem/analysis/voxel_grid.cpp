@@ -7,26 +7,39 @@
 
 namespace drydem::analysis {
 
-namespace {
-struct Dims {
-    int nx, ny, nz;
-};
-Dims dims(const Structure& s, double voxel, double top) {
+VoxelDims voxel_dims(const Structure& s, double voxel, double top) {
     if (!(voxel > 0.0)) throw InputError(fmt::format("voxel size {} m: must be positive", voxel));
     const int nx = std::max(1, int(std::lround(s.box.lx / voxel)));
     const int ny = std::max(1, int(std::lround(s.box.ly / voxel)));
     const int nz = std::max(1, int(std::ceil(top / voxel - 1e-9)));
     return {nx, ny, nz};
 }
-} // namespace
+
+VoxelGrid crop_xy(const VoxelGrid& g, int nx, int ny) {
+    if (nx < 1 || ny < 1 || nx > g.nx || ny > g.ny)
+        throw InputError(fmt::format("window of {} x {} voxels outside the image of {} x {}", nx, ny, g.nx, g.ny));
+    VoxelGrid w;
+    w.nx = nx;
+    w.ny = ny;
+    w.nz = g.nz;
+    w.ax = g.ax;
+    w.ay = g.ay;
+    w.az = g.az;
+    w.label.resize(std::size_t(nx) * std::size_t(ny) * std::size_t(g.nz));
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            std::copy_n(g.label.begin() + std::ptrdiff_t(g.index(0, j, k)), nx,
+                        w.label.begin() + std::ptrdiff_t(w.index(0, j, k)));
+    return w;
+}
 
 std::size_t voxel_count(const Structure& s, double voxel, double top) {
-    const Dims d = dims(s, voxel, top);
+    const VoxelDims d = voxel_dims(s, voxel, top);
     return std::size_t(d.nx) * std::size_t(d.ny) * std::size_t(d.nz);
 }
 
 VoxelGrid voxelize(const Structure& s, double voxel, double top) {
-    const Dims d = dims(s, voxel, top);
+    const VoxelDims d = voxel_dims(s, voxel, top);
     VoxelGrid g;
     g.nx = d.nx;
     g.ny = d.ny;

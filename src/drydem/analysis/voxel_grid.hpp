@@ -32,4 +32,13 @@ struct VoxelGrid {
 /// Bytes the grid of `voxelize(s, voxel, top)` takes, for the memory estimate before the work.
 [[nodiscard]] std::size_t voxel_count(const Structure& s, double voxel, double top);
 
+/// Voxels per axis of `voxelize(s, voxel, top)`.
+struct VoxelDims {
+    int nx, ny, nz;
+};
+[[nodiscard]] VoxelDims voxel_dims(const Structure& s, double voxel, double top);
+
+/// The columns i < nx, j < ny of g (all layers): a lateral window with its corner at the origin.
+[[nodiscard]] VoxelGrid crop_xy(const VoxelGrid& g, int nx, int ny);
+
 } // namespace drydem::analysis

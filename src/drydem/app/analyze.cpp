@@ -86,10 +86,11 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
     }
     if (r.transport && r.transport->solved()) {
         const analysis::TransportLevel& L = r.transport->reported();
-        fmt::print("transport ({:.3g} um voxels, coating below {:.2f} um): tortuosity factor through-plane {:.3f}, "
+        fmt::print("transport ({:.3g} um voxels, coating below {:.2f} um{}): tortuosity factor through-plane {:.3f}, "
                    "in-plane {:.3f} / {:.3f} (x / y), porosity {:.4f}, Bruggeman exponent {:.3f}; electronic "
                    "conductivity {:.4g} S/m, CB network {}\n",
-                   L.voxel * 1e6, L.nz * L.voxel * 1e6, L.tau_z, L.tau_x, L.tau_y, L.porosity,
+                   L.voxel * 1e6, L.nz * L.voxel * 1e6,
+                   r.transport->window > 0.0 ? fmt::format(", window {:.4g} um", r.transport->window * 1e6) : "", L.tau_z, L.tau_x, L.tau_y, L.porosity,
                    analysis::bruggeman_exponent(L.porosity, L.tau_z), L.electronic_z.sigma_eff,
                    L.cb_z.percolates ? fmt::format("percolates ({:.4g} S/m)", L.cb_z.sigma_eff) : "does not percolate");
     }

@@ -22,6 +22,7 @@ analysis::FileDefaults file_defaults(const Config& c) {
 void set_transport_options(analysis::AnalysisOptions& o, const Config& c) {
     o.transport.voxels = c.analysis_transport_voxel_sizes;
     o.transport.max_voxels = c.analysis_transport_max_voxels;
+    o.transport.window = c.analysis_transport_window;
     o.transport.sigma_ncm = c.analysis_ncm_conductivity;
     o.transport.sigma_cb = c.analysis_cb_conductivity;
     o.surfaces.points = c.analysis_surface_points;

@@ -186,6 +186,8 @@ nlohmann::ordered_json transport_json(const Transport& t) {
     tj["convergence"] = conv;
     // Overlapped with the pore sizes: seconds on shared cores, memory an upper bound.
     tj["solved_alongside_pore_sizes"] = t.alongside_pore_sizes;
+    // Solved on a lateral window (analysis.transport_window) with closed sides; 0 = whole box.
+    tj["window_um"] = t.window * 1e6;
     tj["relative_change_from_coarser_voxels"] = voxel_change_json(t);
     tj["extrapolated_to_zero_voxel"] = extrapolated_json(t);
     tj["skipped"] = skipped_json(t);
