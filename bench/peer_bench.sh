@@ -32,6 +32,7 @@ fi
 mpirun="mpirun --allow-run-as-root --oversubscribe"
 V="-var data $data -var nsteps $nsteps -var nwarm $nwarm"
 export OMP_NUM_THREADS=1
+dry() { OMP_NUM_THREADS=$2 "$1" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads "$2" | tee "$out/$n.json"; }
 busy() { ps -eo pcpu,comm --sort=-pcpu | awk 'NR>1 && $1>20 && $2!="ps" {print "   WARNING busy process:", $0}'; }
 rm -f "$out"/*.log "$out"/*.json "$out"/*.screen
 for round in $(seq 1 "$repeat"); do
@@ -39,10 +40,8 @@ for c in $cases; do
   echo "== $c (round $round)"; busy
   n="${c}_r${round}"
   case $c in
-    drydem1) OMP_NUM_THREADS=1 "$drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 1 | tee "$out/$n.json" ;;
-    old1) OMP_NUM_THREADS=1 "$OLD_DRYDEM" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 1 | tee "$out/$n.json" ;;
-    old2) OMP_NUM_THREADS=2 "$OLD_DRYDEM" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 2 | tee "$out/$n.json" ;;
-    drydem2) OMP_NUM_THREADS=2 "$drydem" bench "$data" --steps "$nsteps" --warmup "$nwarm" --threads 2 | tee "$out/$n.json" ;;
+    drydem[12]) dry "$drydem" "${c: -1}" ;;
+    old[12]) dry "$OLD_DRYDEM" "${c: -1}" ;;
     lig1) (cd "$out" && liggghts -in "$peers/in.bench.liggghts" $V -log "$n.log" > "$n.screen" 2>&1) ;;
     lig2) (cd "$out" && $mpirun -np 2 liggghts -in "$peers/in.bench.liggghts" $V -log "$n.log" > "$n.screen" 2>&1) ;;
     gran1) (cd "$out" && lmp -in "$peers/in.bench.lammps" $V -var model granular -log "$n.log" > "$n.screen" 2>&1) ;;

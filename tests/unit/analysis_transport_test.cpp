@@ -221,14 +221,22 @@ TEST(Transport, BruggemanExponentInvertsTheLaw) {
     EXPECT_TRUE(std::isnan(bruggeman_exponent(0.4, 0.0)));
 }
 
-TEST(Transport, ColumnOfCbSpheresPercolatesAndFilmPoresAreConnected) {
-    // A 4 x 4 um box: one column of overlapping CB spheres (r = 0.75 um, spacing 1.2 um, necks of
-    // radius 0.45 um; the lowest cut by the substrate) from the substrate to above the top, and one
-    // NCM sphere beside it. The CB column percolates; the pores are open.
+/// A 4 x 4 um box: one column of overlapping CB spheres (r = 0.75 um, spacing 1.2 um, necks of
+/// radius 0.45 um; the lowest cut by the substrate) at (1, 1) um up to above 6 um, and one NCM
+/// sphere (r = 1 um) at (3, 3, 2) um beside it.
+Structure cb_column_beside_ncm() {
     Structure s;
     s.box.lx = s.box.ly = 4e-6;
     for (int m = 0; m < 6; ++m) s.add({1e-6, 1e-6, 0.3e-6 + 1.2e-6 * m}, 0.75e-6, Phase::cb);
     s.add({3e-6, 3e-6, 2e-6}, 1.0e-6, Phase::ncm, 4740.0);
+    return s;
+}
+
+TEST(Transport, ColumnOfCbSpheresPercolatesAndFilmPoresAreConnected) {
+    // A 4 x 4 um box: one column of overlapping CB spheres (r = 0.75 um, spacing 1.2 um, necks of
+    // radius 0.45 um; the lowest cut by the substrate) from the substrate to above the top, and one
+    // NCM sphere beside it. The CB column percolates; the pores are open.
+    const Structure s = cb_column_beside_ncm();
     TransportOptions o;
     o.voxels = {0.4e-6, 0.2e-6};
     o.sigma_cb = 100.0;
@@ -321,10 +329,7 @@ TEST(Transport, WindowCarriesTheSameCurrentThroughItsSmallerArea) {
     // The CB column of the test above lies inside a 2.4 um window at the origin, the NCM sphere
     // outside it. Insulating NCM: the column's current is the same in the window (closed sides)
     // and in the periodic box, so σ_eff scales with the areas, 16 / 5.76 um².
-    Structure s;
-    s.box.lx = s.box.ly = 4e-6;
-    for (int m = 0; m < 6; ++m) s.add({1e-6, 1e-6, 0.3e-6 + 1.2e-6 * m}, 0.75e-6, Phase::cb);
-    s.add({3e-6, 3e-6, 2e-6}, 1.0e-6, Phase::ncm, 4740.0);
+    const Structure s = cb_column_beside_ncm();
     TransportOptions o;
     o.voxels = {0.3e-6, 0.2e-6}; // the window spans 8 voxels of the coarser
     o.sigma_cb = 100.0;

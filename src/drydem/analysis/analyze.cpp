@@ -71,11 +71,14 @@ void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_
     }
 }
 
+/// This machine's physical memory [bytes]; 0 where unknown.
+double machine_memory_bytes() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE)); }
+
 /// Refuse what this machine cannot hold instead of dying in the allocation.
 void check_voxel_memory(const Structure& s, const AnalysisOptions& o, double top) {
     const double voxels = double(voxel_count(s, o.voxel, top));
     const double need = voxel_analysis_bytes * voxels;
-    const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    const double have = machine_memory_bytes();
     if (voxels >= 4.0e9 || (have > 0.0 && need > 0.8 * have))
         throw InputError(fmt::format(
             "voxel size {:.3g} um: the voxel image has {:.3g} voxels and needs about {:.1f} GB, more than this "
@@ -189,7 +192,7 @@ void voxel_pipeline(AnalysisResult& r, const Structure& s, const AnalysisOptions
 bool fit_together(const Structure& s, const AnalysisOptions& o, double top, double coating_top) {
     const double need = voxel_analysis_bytes * double(voxel_count(s, o.voxel, top)) +
                         transport_peak_bytes(s, coating_top, o.transport);
-    const double have = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    const double have = machine_memory_bytes();
     return have > 0.0 && need <= 0.5 * have;
 }
 

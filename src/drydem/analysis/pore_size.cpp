@@ -80,12 +80,14 @@ std::vector<std::vector<Center>> ridge(const VoxelGrid& g, const std::vector<std
                 if (v == 0) continue;
                 // A small margin keeps float rounding from dropping a centre that is not covered.
                 const float inner = root[v - 1u] + 1e-3f;
+                // B(c) ⊂ B(n) for a neighbour n at distance `length` with value w.
+                auto contains = [&](std::uint16_t w, float length) { return w >= v && root[w] > inner + length; };
                 bool covered = false;
                 if (j_inner && i >= 2 && i + 2 < g.nx) {
                     const std::uint16_t* here = r2.data() + idx;
                     for (std::size_t a = 0; a < offsets.size() && !covered; ++a) {
                         const std::uint16_t w = here[step[a]];
-                        covered = w >= v && root[w] > inner + offsets[a].length;
+                        covered = contains(w, offsets[a].length);
                     }
                 } else {
                     for (const Offset& o : offsets) {
@@ -93,7 +95,7 @@ std::vector<std::vector<Center>> ridge(const VoxelGrid& g, const std::vector<std
                         if (kk < 0 || kk >= g.nz) continue;
                         const int jj = (j + o.dj + g.ny) % g.ny, ii = (i + o.di + g.nx) % g.nx;
                         const std::uint16_t w = r2[g.index(ii, jj, kk)];
-                        if (w >= v && root[w] > inner + o.length) {
+                        if (contains(w, o.length)) {
                             covered = true;
                             break;
                         }

@@ -29,10 +29,10 @@
 namespace drydem {
 
 struct LubricationParams {
-    double viscosity = 0.0;             ///< η [Pa s]; 0 = off
-    double kappa_c = 0.1;               ///< κ_c = h_c / r_L: below it every coefficient is frozen
-    double log_kappa_c = std::log(0.1); ///< ln κ_c, kept with κ_c by the constructor
-    LubricationParams() = default;
+    double viscosity;   ///< η [Pa s]; 0 = off
+    double kappa_c;     ///< κ_c = h_c / r_L: below it every coefficient is frozen
+    double log_kappa_c; ///< ln κ_c, kept with κ_c by the constructor
+    LubricationParams() : LubricationParams(0.0, 0.1) {}
     LubricationParams(double eta, double kc) : viscosity(eta), kappa_c(kc), log_kappa_c(std::log(kc)) {}
 };
 
