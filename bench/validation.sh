@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# Issue 13: the paper's calibration and blind validation (docs/validation.md, "Calibration and
+# blind validation"). One queue of named steps, each a `drydem calibrate` or `drydem study` that
+# resumes where it stopped; two instances with disjoint step lists use both cores.
+#
+#   cal20      calibrate friction and CB porosity on 20.1 mg/cm2, 75 x 75 um
+#              (examples/calibrate_20.1.toml: 83.8 +- 2 um, Eq. 2 porosity 0.506 +- 0.02)
+#   v20        the calibrated 20.1 film, 3 seeds, 75 um (the calibration point with its spread;
+#              also the 75 um point of the box-size series)
+#   blind25 blind30 blind35
+#              the other loadings predicted with the calibrated values, 3 seeds, 75 um, each with
+#              its paper Table 2 rates (examples/paper_*.toml)
+#   box40 box56
+#              box-size series at 20.1 (with v20), 3 seeds
+#   k3e6 k3e7  time-scaling series at 20.1 in the 40 um box (with box40 at k = 1e7): k and the
+#              Hamaker factor together (paper Sec. 4.1 scales the Hamaker constants by k), the
+#              capillary factor kept at 9e3 (the paper's stability compromise), 3 seeds
+#   s_hamaker s_restitution s_ecb_lo s_ecb_hi s_cap_lo s_cap_hi
+#              one-at-a-time sensitivities at 20.1 in the 40 um box, 2 seeds each (against box40)
+#
+# usage: bench/validation.sh STEP...     (then scripts/validation_report.py writes the tables/plots)
+# environment: THREADS (1) threads per run, OUT (results), DRYDEM (build/drydem; a frozen copy
+#   keeps a long queue on one binary while the tree is rebuilt)
+# Every finished study's small files (study.json/csv; per run config, summary, analysis files, a
+# thinned time series) are copied to docs/data/validation/STEP, so the report is rebuilt from a
+# clean clone; the runs themselves take days on one 2-core machine (docs/validation.md).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+drydem=${DRYDEM:-$here/build/drydem}
+threads=${THREADS:-1}
+out=${OUT:-$here/results}
+archive=$here/docs/data/validation
+cal=$out/calibrate_20.1
+mkdir -p "$out" "$archive"
+
+calibrated_sets() {  # --set arguments with the calibration's best parameters
+  /usr/bin/python3 - "$cal/result.json" <<'PY'
+import json, sys
+best = json.load(open(sys.argv[1]))["best"]
+print(" ".join(f"--set {k}={v['value']!r}" for k, v in best.items()))
+PY
+}
+
+study() {  # $1 step, $2 example config, rest: drydem study arguments
+  local step=$1 config=$2 dir=$out/validation_$1
+  shift 2
+  if [[ ! -f $cal/result.json ]]; then
+    echo "== $step needs the calibration (step cal20) to have finished: no $cal/result.json" >&2
+    return 0
+  fi
+  local sets
+  sets=$(calibrated_sets)
+  local resume=()
+  if [[ -f $dir/config.toml ]]; then resume=(--resume); fi
+  # shellcheck disable=SC2086
+  "$drydem" study "$here/examples/$config" $sets "$@" --jobs 1 --threads "$threads" \
+    --quiet --no-plots "${resume[@]}" -o "$dir" > "$out/validation_$step.log" 2>&1 ||
+    echo "== $step: drydem study exited $? (see $out/validation_$step.log)" >&2
+  keep_small_files "$dir" "$archive/$step"
+}
+
+keep_small_files() {  # $1 study folder, $2 archive folder
+  mkdir -p "$2"
+  cp "$1"/study.json "$1"/study.csv "$2/" 2>/dev/null || true
+  for run in "$1"/runs/*/; do
+    [[ -f $run/summary.json ]] || continue
+    local name dest
+    name=$(basename "$run")
+    dest=$2/$name
+    mkdir -p "$dest/analysis"
+    cp "$run/config.toml" "$run/summary.json" "$dest/"
+    cp "$run"/analysis/*.json "$run"/analysis/*.csv "$dest/analysis/" 2>/dev/null || true
+    /usr/bin/python3 - "$run/timeseries.csv" "$dest/timeseries.csv" <<'PY'
+import sys
+rows = open(sys.argv[1]).read().splitlines()
+head, body = rows[0], rows[1:]
+stride = max(1, -(-len(body) // 500))
+kept = body[::stride]
+if body and kept[-1] != body[-1]:
+    kept.append(body[-1])
+open(sys.argv[2], "w").write("\n".join([head] + kept) + "\n")
+PY
+  done
+}
+
+calibrate() {
+  local resume=()
+  if [[ -f $cal/ledger.json ]]; then resume=(--resume); fi
+  "$drydem" calibrate "$here/examples/calibrate_20.1.toml" --jobs 2 --threads 1 --quiet \
+    "${resume[@]}" -o "$cal" > "$out/calibrate_20.1.log" 2>&1 ||
+    echo "== cal20: drydem calibrate exited $? (see $out/calibrate_20.1.log)" >&2
+  mkdir -p "$archive/cal20"
+  cp "$cal"/calibration.json "$cal"/ledger.json "$cal"/evaluations.csv "$cal"/result.json \
+     "$cal"/calibrated.toml "$archive/cal20/" 2>/dev/null || true
+}
+
+box40=(--set film.box_x=40um --set film.box_y=40um)
+for step in "$@"; do
+  echo "== $step ($(date -u +%H:%M))" >&2
+  case $step in
+    cal20) calibrate ;;
+    v20) study v20 paper_20.1.toml --seeds 3 ;;
+    blind25) study blind25 paper_25.2.toml --seeds 3 ;;
+    blind30) study blind30 paper_30.3.toml --seeds 3 ;;
+    blind35) study blind35 paper_35.4.toml --seeds 3 ;;
+    box40) study box40 paper_20.1.toml --seeds 3 "${box40[@]}" ;;
+    box56) study box56 paper_20.1.toml --seeds 3 --set film.box_x=56um --set film.box_y=56um ;;
+    k3e6) study k3e6 paper_20.1.toml --seeds 3 "${box40[@]}" \
+            --set scaling.time_factor=3e6 --set scaling.hamaker_factor=3e6 ;;
+    k3e7) study k3e7 paper_20.1.toml --seeds 3 "${box40[@]}" \
+            --set scaling.time_factor=3e7 --set scaling.hamaker_factor=3e7 ;;
+    s_hamaker) study s_hamaker paper_20.1.toml --seeds 2 "${box40[@]}" \
+                 --set van_der_waals.hamaker_ncm_cb=9.5e-19 ;;
+    s_restitution) study s_restitution paper_20.1.toml --seeds 2 "${box40[@]}" \
+                     --set contact.restitution=0.3 ;;
+    s_ecb_lo) study s_ecb_lo paper_20.1.toml --seeds 2 "${box40[@]}" --set materials.cb_youngs_modulus=50GPa ;;
+    s_ecb_hi) study s_ecb_hi paper_20.1.toml --seeds 2 "${box40[@]}" --set materials.cb_youngs_modulus=400GPa ;;
+    s_cap_lo) study s_cap_lo paper_20.1.toml --seeds 2 "${box40[@]}" --set scaling.capillary_factor=4.5e3 ;;
+    s_cap_hi) study s_cap_hi paper_20.1.toml --seeds 2 "${box40[@]}" --set scaling.capillary_factor=1.8e4 ;;
+    *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
+  esac
+done
