@@ -18,7 +18,8 @@
 #   s_hamaker s_restitution s_ecb_lo s_ecb_hi s_cap_lo s_cap_hi
 #              one-at-a-time sensitivities at 20.1 in the 40 um box, 2 seeds each (against box40)
 #
-# usage: bench/validation.sh STEP...     (then scripts/validation_report.py writes the tables/plots)
+# usage: bench/validation.sh STEP...     (then scripts/validation_report.py writes the tables/plots
+#        into docs/data/validation/report.md and docs/figures/validation_*.png)
 # environment: THREADS (1) threads per run, OUT (results), DRYDEM (build/drydem; a frozen copy
 #   keeps a long queue on one binary while the tree is rebuilt)
 # Every finished study's small files (study.json/csv; per run config, summary, analysis files, a
@@ -92,6 +93,9 @@ calibrate() {
   mkdir -p "$archive/cal20"
   cp "$cal"/calibration.json "$cal"/ledger.json "$cal"/evaluations.csv "$cal"/result.json \
      "$cal"/calibrated.toml "$archive/cal20/" 2>/dev/null || true
+  for plot in surrogate targets; do
+    cp "$cal/plots/$plot.png" "$here/docs/figures/validation_cal_$plot.png" 2>/dev/null || true
+  done
 }
 
 box40=(--set film.box_x=40um --set film.box_y=40um)
