@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// NMP and air property correlations at the check values of dryer.md D-5 (relative 1e-4; the
-// values are those of the Python reference dryer_ref.py at 6 significant digits).
+// NMP and air property correlations at the check values of docs/dryer.md D-5 (relative 1e-4; the
+// values come from an independent Python implementation of the same correlations, 6 digits).
 #include "drydem/dryer_model/nmp_properties.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
