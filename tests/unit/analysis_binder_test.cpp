@@ -76,3 +76,59 @@ TEST(BinderMigration, FasterDryingPutsMoreBinderOnTopAndLessAtTheSubstrate) {
         last_top = b.top10;
     }
 }
+
+namespace {
+/// Frames of the shrinkage at the given times: the solid fraction `solid(ξ)` (ξ = z/level) of a
+/// film holding the final film's solids, on slabs of h.dz up to the level.
+template <class Solid>
+std::vector<PorosityFrame> frames_of(const DryingHistory& h, std::initializer_list<double> times, Solid&& solid) {
+    std::vector<PorosityFrame> out;
+    for (double t : times) {
+        const std::size_t k = std::size_t(std::lround(t / 0.1));
+        PorosityFrame f{h.time[k], h.liquid_level[k], {}};
+        const std::size_t slabs = std::size_t(std::ceil(f.height / h.dz - 1e-9));
+        for (std::size_t s = 0; s < slabs; ++s) f.porosity.push_back(1.0 - solid((s + 0.5) * h.dz / f.height, f.height));
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+} // namespace
+
+// The run's own frames replace the affine compression of the final film while it shrinks: frames
+// that are that compression give the same binder profile (the model reads them, scaled to the final
+// solid volume, and interpolates in time); frames with the solids piled under the level (a skin)
+// give another one, with the binder mass conserved either way.
+TEST(BinderMigration, ShrinkageFollowsTheRunsFrames) {
+    const double eps = 0.45, Hf = 20e-6;
+    const DryingHistory affine = linear_history(40e-6, Hf, 1e-6, eps);
+    BinderParams p;
+    p.cells = 40;
+    p.diffusivity = 2e-11;
+    const BinderProfile a = binder_migration(affine, p);
+    EXPECT_EQ(a.porosity_frames, 0);
+
+    DryingHistory same = affine;
+    same.frames = frames_of(affine, {0.0, 5.0, 10.0, 15.0},
+                            [&](double, double level) { return (1.0 - eps) * Hf / level; });
+    const BinderProfile b = binder_migration(same, p);
+    EXPECT_EQ(b.porosity_frames, 4);
+    EXPECT_LT(b.mass_balance, 1e-10);
+    ASSERT_EQ(b.binder.size(), a.binder.size());
+    for (std::size_t i = 0; i < a.binder.size(); ++i) EXPECT_NEAR(b.binder[i], a.binder[i], 1e-9) << i;
+
+    DryingHistory skin = affine;
+    // Solids twice as dense in the upper half of the wet film as in the lower (same volume).
+    skin.frames = frames_of(affine, {0.0, 5.0, 10.0, 15.0}, [&](double xi, double level) {
+        return (1.0 - eps) * Hf / level * (xi > 0.5 ? 4.0 / 3.0 : 2.0 / 3.0);
+    });
+    const BinderProfile c = binder_migration(skin, p);
+    EXPECT_EQ(c.porosity_frames, 4);
+    EXPECT_LT(c.mass_balance, 1e-10);
+    double diff = 0.0;
+    for (std::size_t i = 0; i < a.binder.size(); ++i) diff = std::max(diff, std::abs(c.binder[i] - a.binder[i]));
+    EXPECT_GT(diff, 1e-3);
+    // Frames after the level reached H_f (or at it) do not count: the pore emptying uses ε_f.
+    DryingHistory late = affine;
+    late.frames = frames_of(affine, {25.0}, [&](double, double) { return 1.0 - eps; });
+    EXPECT_EQ(binder_migration(late, p).porosity_frames, 0);
+}

@@ -258,3 +258,46 @@ TEST(ParticleIo, ErrorsNameFileAndLine) {
     msg = error_of(dir / "missing.csv");
     EXPECT_NE(msg.find("missing.csv"), std::string::npos) << msg;
 }
+
+// A run's dump holds one frame per snapshot time; the binder model reads them all, in order, and
+// the last one is what read_particles() reads.
+TEST(ParticleIo, EveryDumpFrameIsReadInOrder) {
+    const auto dir = temp_dir();
+    const auto file = write_text(dir / "two.dump", R"(ITEM: TIMESTEP
+0
+ITEM: NUMBER OF ATOMS
+2
+ITEM: BOX BOUNDS pp pp fm
+0 4e-5
+0 4e-5
+0 1e-4
+ITEM: ATOMS id type x y z radius
+1 1 1e-5 1e-5 9e-5 1e-6
+2 2 2e-5 2e-5 8e-5 7.5e-7
+ITEM: TIMESTEP
+100
+ITEM: NUMBER OF ATOMS
+2
+ITEM: BOX BOUNDS pp pp fm
+0 4e-5
+0 4e-5
+0 1e-4
+ITEM: ATOMS id type x y z radius
+1 1 1e-5 1e-5 3e-5 1e-6
+2 2 2e-5 2e-5 2e-5 7.5e-7
+)");
+    std::vector<drydem::DumpSnapshot> frames;
+    drydem::for_each_dump_frame(file, [&](drydem::DumpSnapshot&& d) { frames.push_back(std::move(d)); });
+    ASSERT_EQ(frames.size(), 2u);
+    EXPECT_EQ(frames[0].step, 0);
+    EXPECT_EQ(frames[1].step, 100);
+    ASSERT_EQ(frames[0].particles.particles.size(), 2u);
+    EXPECT_DOUBLE_EQ(frames[0].particles.particles[0].position.z, 9e-5);
+    EXPECT_DOUBLE_EQ(frames[1].particles.particles[0].position.z, 3e-5);
+    EXPECT_DOUBLE_EQ(frames[1].particles.particles[1].radius, 7.5e-7);
+    const auto last = read_particles(file);
+    ASSERT_EQ(last.particles.size(), 2u);
+    EXPECT_DOUBLE_EQ(last.particles[1].position.z, frames[1].particles.particles[1].position.z);
+    EXPECT_THROW(drydem::for_each_dump_frame(write_text(dir / "x.csv", "id,type,x_m\n"), [](drydem::DumpSnapshot&&) {}),
+                 drydem::InputError);
+}

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <future>
 #include <omp.h>
@@ -52,7 +53,9 @@ namespace {
 /// Binder migration (paper Eq. 1) over the run's drying history, and the same film dried faster.
 template <class Say>
 void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_top, Say&& say) {
-    const DryingHistory h = read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
+    DryingHistory h = read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
+    if (!o.dump.empty() && std::filesystem::exists(o.dump))
+        h.frames = porosity_frames(o.dump, h, o.dump_defaults, o.dump_rule);
     BinderParams bp = o.binder;
     if (r.transport && r.transport->solved()) {
         const TransportLevel& L = r.transport->reported();
@@ -61,12 +64,16 @@ void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_
     }
     r.binder = binder_migration(h, bp);
     say(fmt::format("binder migration: Pe {:.3g}, binder at the substrate (bottom 10 %) {:.3f}, top 10 % {:.3f} "
-                    "of the mean, {} steps",
-                    r.binder->peclet, r.binder->bottom10, r.binder->top10, r.binder->steps));
+                    "of the mean, {} steps, {}",
+                    r.binder->peclet, r.binder->bottom10, r.binder->top10, r.binder->steps,
+                    r.binder->porosity_frames > 0
+                        ? fmt::format("shrinkage from {} dump frames", r.binder->porosity_frames)
+                        : std::string("affine shrinkage (no dump frames)")));
     // The same film dried f times faster: the time axis of the history divided by f.
     for (double f : o.binder_rate_factors) {
         DryingHistory hf = h;
         for (double& t : hf.time) t = h.time.front() + (t - h.time.front()) / f;
+        for (PorosityFrame& fr : hf.frames) fr.time = h.time.front() + (fr.time - h.time.front()) / f;
         r.binder_rates.emplace_back(f, binder_migration(hf, bp));
     }
 }

@@ -40,6 +40,12 @@ struct AnalysisOptions {
     /// Bruggeman exponent is the film's through-plane one when the transport solve gives one in
     /// [1, 5], else BinderParams::bruggeman.
     std::string timeseries;
+    /// The run's dump (snapshots/dump.lammpstrj): its frames give the porosity profile while the
+    /// film shrinks (binder_migration.hpp); empty or missing = the affine compression. Its
+    /// particles are read with these defaults and this phase rule.
+    std::string dump;
+    FileDefaults dump_defaults;
+    PhaseRule dump_rule;
     BinderParams binder;
     std::vector<double> binder_rate_factors{0.5, 2.0}; ///< also with the drying this much faster
     std::function<void(const std::string&)> log; ///< progress lines, may be empty

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/analysis/binder_migration.hpp"
+#include "drydem/analysis/profiles.hpp"
 #include "drydem/core/error.hpp"
 #include <fmt/format.h>
 #include <algorithm>
@@ -26,27 +27,92 @@ struct Level {
     }
 };
 
+/// When the level reaches H_f: in the run's rows, else on at the late rate after the last one.
+double consolidation_time(const DryingHistory& h, double late_rate) {
+    for (std::size_t k = 1; k < h.time.size(); ++k)
+        if (h.liquid_level[k] <= h.final_height && h.liquid_level[k - 1] > h.final_height) {
+            const double w = (h.liquid_level[k - 1] - h.final_height) / (h.liquid_level[k - 1] - h.liquid_level[k]);
+            return h.time[k - 1] + w * (h.time[k] - h.time[k - 1]);
+        }
+    if (h.liquid_level.front() <= h.final_height) return h.time.front();
+    return h.time.back() + (h.final_height - h.liquid_level.back()) / late_rate;
+}
+
 } // namespace
 
 namespace {
 
-/// ε_f averaged over each of the n cells of the final film (slab profile, piecewise constant).
-std::vector<double> cell_porosity(const DryingHistory& h, int n) {
-    const double Hf = h.final_height, dxi = 1.0 / n;
+/// A slab profile (slabs of dz from z = 0) averaged over each of the n cells of [0, height]; cells
+/// above the profile's top are pure liquid (1).
+std::vector<double> cell_average(const std::vector<double>& profile, double dz, double height, int n) {
+    const double dxi = 1.0 / n;
     std::vector<double> eps(std::size_t(n), 0.0);
     for (int i = 0; i < n; ++i) {
-        const double a = i * dxi * Hf, b = (i + 1) * dxi * Hf;
+        const double a = i * dxi * height, b = (i + 1) * dxi * height;
         double acc = 0.0;
-        for (std::size_t k = std::size_t(a / h.dz); k < h.porosity.size() && k * h.dz < b; ++k) {
-            const double lo = std::max(a, k * h.dz), hi = std::min(b, (k + 1) * h.dz);
-            if (hi > lo) acc += (hi - lo) * std::clamp(h.porosity[k], 0.0, 1.0);
+        for (std::size_t k = std::size_t(a / dz); k < profile.size() && k * dz < b; ++k) {
+            const double lo = std::max(a, k * dz), hi = std::min(b, (k + 1) * dz);
+            if (hi > lo) acc += (hi - lo) * std::clamp(profile[k], 0.0, 1.0);
         }
-        const double covered = std::min(b, h.porosity.size() * h.dz) - a;
-        eps[std::size_t(i)] = covered > 0 ? acc / covered : 1.0;
+        const double covered = std::min(b, profile.size() * dz) - a;
+        eps[std::size_t(i)] = covered > 0 ? (acc + (b - a - covered)) / (b - a) : 1.0;
         eps[std::size_t(i)] = std::max(eps[std::size_t(i)], 1e-3);
     }
     return eps;
 }
+
+/// The solid fraction per cell of the shrinking film (ξ = z/h cells): the run's frames and, at the
+/// time the level reaches H_f, the final film; linear in time between them, scaled to the final
+/// film's solid volume. Without frames: the affine compression of the final film.
+class ShrinkageSolids {
+public:
+    ShrinkageSolids(const DryingHistory& h, const std::vector<double>& eps, double consolidation, int n)
+        : n_(n), height_f_(h.final_height) {
+        for (double e : eps) solid_volume_ += (1.0 - e) * h.final_height / n;
+        for (const PorosityFrame& f : h.frames) {
+            if (!(f.height > h.final_height) || !(f.time < consolidation)) continue;
+            if (!times_.empty() && !(f.time > times_.back())) continue;
+            std::vector<double> phi = cell_average(f.porosity, h.dz, f.height, n);
+            for (double& x : phi) x = 1.0 - x;
+            times_.push_back(f.time);
+            solids_.push_back(std::move(phi));
+        }
+        frames_ = int(times_.size());
+        if (frames_ == 0) return;
+        std::vector<double> phi(eps.size());
+        for (std::size_t i = 0; i < eps.size(); ++i) phi[i] = 1.0 - eps[i];
+        times_.push_back(consolidation);
+        solids_.push_back(std::move(phi));
+    }
+    [[nodiscard]] int frames() const { return frames_; }
+
+    /// θ = 1 − φ_s per cell at time t for a film of height H (> H_f).
+    void solvent(double t, double height, const std::vector<double>& eps, std::vector<double>& theta) const {
+        if (frames_ == 0) {
+            for (int i = 0; i < n_; ++i) theta[std::size_t(i)] = 1.0 - (1.0 - eps[std::size_t(i)]) * height_f_ / height;
+            return;
+        }
+        const auto it = std::upper_bound(times_.begin(), times_.end(), t);
+        const std::size_t k1 = std::min<std::size_t>(std::size_t(it - times_.begin()), times_.size() - 1);
+        const std::size_t k0 = k1 == 0 ? 0 : k1 - 1;
+        const double w = k1 == k0 ? 0.0 : std::clamp((t - times_[k0]) / (times_[k1] - times_[k0]), 0.0, 1.0);
+        double volume = 0.0;
+        for (int i = 0; i < n_; ++i) {
+            const double phi = (1.0 - w) * solids_[k0][std::size_t(i)] + w * solids_[k1][std::size_t(i)];
+            theta[std::size_t(i)] = phi;
+            volume += phi * height / n_;
+        }
+        const double scale = volume > 0.0 ? solid_volume_ / volume : 0.0;
+        for (int i = 0; i < n_; ++i)
+            theta[std::size_t(i)] = 1.0 - std::min(0.999, theta[std::size_t(i)] * scale);
+    }
+
+private:
+    int n_ = 0, frames_ = 0;
+    double height_f_ = 0.0, solid_volume_ = 0.0;
+    std::vector<double> times_;
+    std::vector<std::vector<double>> solids_;
+};
 
 /// Implicit diffusion of the dissolved binder over one step: solves, for the cell concentrations c,
 /// (θ₁ H₁ Δξ) c - Δt ∂/∂z (D₀ θ^α ∂c/∂z) = r (the convected amounts) with the Thomas algorithm.
@@ -113,7 +179,7 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
         throw InputError("binder migration: diffusivity >= 0, cells >= 4, residual saturation in (0, 1)");
     const int n = p.cells;
     const double Hf = h.final_height, dxi = 1.0 / n;
-    const std::vector<double> eps = cell_porosity(h, n);
+    const std::vector<double> eps = cell_average(h.porosity, h.dz, Hf, n);
     double pore_volume = 0.0; // ∫₀^H ε_f dz
     for (double e : eps) pore_volume += e * dxi * Hf;
 
@@ -124,15 +190,17 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
     if (!(late < 0.0)) late = mean_rate;
     if (!(late < 0.0)) throw InputError("binder migration: the liquid level does not descend");
     const Level level{h, late};
+    const ShrinkageSolids solids(h, eps, consolidation_time(h, late), n);
 
     BinderProfile out;
+    out.porosity_frames = solids.frames();
     // Solvent fraction per cell and domain height at time t; S the saturation (1 while shrinking).
     auto state = [&](double t, std::vector<double>& theta, double& height, double& S) {
         const double lv = level(t);
         if (lv > Hf) {
             height = lv;
             S = 1.0;
-            for (int i = 0; i < n; ++i) theta[std::size_t(i)] = 1.0 - (1.0 - eps[std::size_t(i)]) * Hf / lv;
+            solids.solvent(t, lv, eps, theta);
         } else {
             height = Hf;
             double liquid = 0.0; // ∫₀^level ε_f dz
@@ -205,13 +273,14 @@ DryingHistory read_drying_history(const std::string& timeseries_csv, double fina
     if (!in) throw InputError(fmt::format("binder migration: cannot read {}", timeseries_csv));
     std::string line;
     std::getline(in, line);
-    int col_t = -1, col_h = -1, col = 0;
+    int col_t = -1, col_h = -1, col_s = -1, col = 0;
     {
         std::stringstream ss(line);
         std::string name;
         while (std::getline(ss, name, ',')) {
             if (name == "process_time_s") col_t = col;
             if (name == "liquid_level_um") col_h = col;
+            if (name == "step") col_s = col;
             ++col;
         }
     }
@@ -224,17 +293,41 @@ DryingHistory read_drying_history(const std::string& timeseries_csv, double fina
     while (std::getline(in, line)) {
         std::stringstream ss(line);
         std::string cell;
-        double t = NAN, lv = NAN;
+        double t = NAN, lv = NAN, step = NAN;
         for (int k = 0; std::getline(ss, cell, ','); ++k) {
             if (k == col_t) t = std::stod(cell);
             if (k == col_h) lv = std::stod(cell) * 1e-6;
+            if (k == col_s) step = std::stod(cell);
         }
         if (!std::isfinite(t) || !std::isfinite(lv)) continue;
         if (!h.time.empty() && t <= h.time.back()) continue;
         h.time.push_back(t);
         h.liquid_level.push_back(lv);
+        if (col_s >= 0) h.step.push_back(step);
     }
+    if (h.step.size() != h.time.size()) h.step.clear();
     return h;
+}
+
+std::vector<PorosityFrame> porosity_frames(const std::filesystem::path& dump, const DryingHistory& h,
+                                           const FileDefaults& defaults, const PhaseRule& rule) {
+    std::vector<PorosityFrame> frames;
+    if (h.step.size() != h.time.size() || h.time.size() < 2) return frames;
+    const auto at_step = [&](double step, const std::vector<double>& y) -> double {
+        const auto it = std::lower_bound(h.step.begin(), h.step.end(), step);
+        if (it == h.step.end()) return NAN;
+        const std::size_t k = std::size_t(it - h.step.begin());
+        if (*it == step || k == 0) return *it == step ? y[k] : NAN;
+        const double w = (step - h.step[k - 1]) / (h.step[k] - h.step[k - 1]);
+        return (1.0 - w) * y[k - 1] + w * y[k];
+    };
+    for_each_dump_frame(dump, [&](DumpSnapshot&& d) {
+        const double t = at_step(double(d.step), h.time), level = at_step(double(d.step), h.liquid_level);
+        if (!std::isfinite(t) || !std::isfinite(level) || !(level > h.final_height)) return;
+        const Structure s = structure_from_file(d.particles, defaults, rule);
+        frames.push_back({t, level, volume_fraction_profiles(s, h.dz, level).pore_total});
+    });
+    return frames;
 }
 
 } // namespace drydem::analysis

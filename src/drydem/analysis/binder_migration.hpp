@@ -8,9 +8,13 @@
 // drying picture of Jaiser et al. (J. Power Sources 318 (2016) 210: shrinkage, then capillary
 // transport of solvent to the top while the pores empty).
 // Coupled to the DEM run:
-//   - film shrinkage: the liquid level h(t) of the run's time series is the film top; the solvent
-//     does not move, the descending surface sweeps the binder (binder cannot evaporate) and the
-//     solids are compressed affinely, φ_s(z, t) = φ_s,f(z H_f/h) H_f/h, φ_s,f the final solid profile;
+//   - film shrinkage: the liquid level h(t) of the run's time series is the film top; the descending
+//     surface sweeps the binder (binder cannot evaporate). The solid profile φ_s(z, t) is the run's
+//     own: the porosity profiles of its dump frames, in the coordinate ξ = z/h scaled by the level,
+//     interpolated linearly in time and, after the last frame, toward the final profile at the time
+//     the level reaches H_f; scaled so that the solid volume stays the final film's. Without frames
+//     the solids are compressed affinely, φ_s(z, t) = φ_s,f(z H_f/h) H_f/h. The solvent flux follows
+//     from the change of the solvent in each cell;
 //   - pore emptying (h below the final height H_f): the liquid volume is the run's, ∫₀^h ε_f dz, but
 //     capillary pressure keeps the saturation S uniform over the height (small pores stay filled),
 //     θ = ε_f(z) S(t): the solvent flows to the top, F(z) = E/ρ_l ∫₀^z ε_f / ∫₀^H ε_f, and carries
@@ -20,6 +24,9 @@
 // implicit diffusion (tridiagonal), no binder flux through substrate and top. Mass is conserved to
 // round-off.
 #pragma once
+#include "drydem/analysis/structure.hpp"
+#include "drydem/io/particle_io.hpp"
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,13 +45,22 @@ struct BinderParams {
     double max_step = 0.01;         ///< [s]
 };
 
+/// The solvent-accessible porosity over the height of the film at one time of its shrinkage.
+struct PorosityFrame {
+    double time = 0.0;                 ///< process time [s]
+    double height = 0.0;               ///< the liquid level then, the top of the wet film [m]
+    std::vector<double> porosity;      ///< per slab of DryingHistory::dz from z = 0 up to `height`
+};
+
 /// What the DEM run gives the model.
 struct DryingHistory {
     std::vector<double> time;          ///< process time [s], increasing
     std::vector<double> liquid_level;  ///< [m]
+    std::vector<double> step;          ///< the run's step at each row (empty when the file has none)
     double final_height = 0.0;         ///< H_f [m]
     double dz = 0.0;                   ///< slab width of the profile [m]
     std::vector<double> porosity;      ///< ε_f per slab of the final film from z = 0 (solvent-accessible)
+    std::vector<PorosityFrame> frames; ///< during the shrinkage, increasing time; empty: affine
 };
 
 struct BinderProfile {
@@ -58,13 +74,21 @@ struct BinderProfile {
     double end_time = 0.0;          ///< when S reached the residual saturation [s]
     double mass_balance = 0.0;      ///< |M_end − M_0| / M_0
     int steps = 0;
+    int porosity_frames = 0;        ///< frames of the run that shaped the shrinkage (0: affine)
 };
 
 [[nodiscard]] BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p);
 
-/// The history of a run folder: timeseries.csv (process_time_s, liquid_level_um), the final height
-/// H_f and the solvent-accessible porosity profile (profiles' pore_total) given by the caller.
+/// The history of a run folder: timeseries.csv (process_time_s, liquid_level_um, step), the final
+/// height H_f and the solvent-accessible porosity profile (profiles' pore_total) given by the caller.
 [[nodiscard]] DryingHistory read_drying_history(const std::string& timeseries_csv, double final_height, double dz,
                                                 const std::vector<double>& porosity);
+
+/// The frames of a run's dump (snapshots/dump.lammpstrj) taken while the film shrinks, as porosity
+/// profiles (pore_total of profiles.hpp, slabs of h.dz up to the level): each frame's time and
+/// level interpolated from the history's (step, time, level) rows. Frames before the first row,
+/// after the last or with the level at or below H_f are left out; no step column, no frames.
+[[nodiscard]] std::vector<PorosityFrame> porosity_frames(const std::filesystem::path& dump, const DryingHistory& h,
+                                                         const FileDefaults& defaults, const PhaseRule& rule = {});
 
 } // namespace drydem::analysis

@@ -43,6 +43,13 @@ int run_analyze(const Config& c, const AnalyzeOptions& o) {
     // A run folder's snapshot: its time series drives the binder migration model.
     if (const fs::path ts = o.snapshot.parent_path() / "timeseries.csv"; a.timeseries.empty() && o.snapshot.filename() == "final.csv" && fs::exists(ts))
         a.timeseries = ts.string();
+    // ... and its dump frames the porosity profile while the film shrinks.
+    if (const fs::path dump = o.snapshot.parent_path() / "snapshots" / "dump.lammpstrj";
+        !a.timeseries.empty() && a.dump.empty() && fs::exists(dump)) {
+        a.dump = dump.string();
+        a.dump_defaults = file_defaults(c);
+        a.dump_rule = rule;
+    }
     a.keep_grid = o.export_voxels || o.tiff;
     if (!o.quiet) a.log = [](const std::string& m) { fmt::print("  {}\n", m); };
     if (a.voxel > 0.0) {

@@ -56,6 +56,8 @@ private:
         ao.pore_top = c.analysis_pore_top;
         set_transport_options(ao, c);
         ao.timeseries = (dir / "timeseries.csv").string();
+        ao.dump = (dir / "snapshots" / "dump.lammpstrj").string();
+        ao.dump_defaults = file_defaults(c);
         ao.log = [this](const std::string& m) { ctx_.log.info("analysis: {}", m); };
         const analysis::Structure st = analysis::structure_from_file(read_particles(dir / "final.csv"), file_defaults(c));
         const analysis::AnalysisResult ar = analysis::analyze_structure(st, ao);

@@ -230,10 +230,10 @@ struct DumpFrame {
     std::size_t atoms_line = 0;
 };
 
-/// Reads the items of every frame, skipping the atom lines; returns the last complete frame.
-DumpFrame last_dump_frame(LineReader& in, std::string first) {
-    DumpFrame cur, last;
-    bool complete = false;
+/// Reads the items of every frame, skipping the atom lines; returns every complete frame.
+std::vector<DumpFrame> dump_frames(LineReader& in, std::string first) {
+    DumpFrame cur;
+    std::vector<DumpFrame> frames;
     std::string line = std::move(first);
     const auto value_line = [&](std::string_view what) {
         if (!in.next(line)) in.fail(fmt::format("file ends after ITEM: {}", what));
@@ -277,16 +277,15 @@ DumpFrame last_dump_frame(LineReader& in, std::string first) {
                                fmt::format("last frame (timestep {}) is incomplete: {} of {} atom "
                                            "lines; cut the file before this ITEM: ATOMS line",
                                            cur.step, k, cur.natoms));
-            last = cur;
-            complete = true;
+            frames.push_back(cur);
         }
     } while (in.next(line));
-    if (!complete) in.fail("no ITEM: ATOMS section: not a LAMMPS dump?");
-    return last;
+    if (frames.empty()) in.fail("no ITEM: ATOMS section: not a LAMMPS dump?");
+    return frames;
 }
 
-void read_dump(LineReader& in, std::string first, ParticleFile& out) {
-    const DumpFrame last = last_dump_frame(in, std::move(first));
+/// The particles of one frame found by dump_frames().
+void read_dump_frame(LineReader& in, const DumpFrame& last, ParticleFile& out) {
     std::string line;
 
     const auto col = [&](std::initializer_list<std::string_view> names) -> int {
@@ -340,6 +339,10 @@ void read_dump(LineReader& in, std::string first, ParticleFile& out) {
         out.ly = last.box[3] - last.box[2];
     }
     out.format = "lammps dump";
+}
+
+void read_dump(LineReader& in, std::string first, ParticleFile& out) {
+    read_dump_frame(in, dump_frames(in, std::move(first)).back(), out);
 }
 
 /// "particle 7 (line 9)"
@@ -410,17 +413,37 @@ bool looks_like_csv_header(std::string_view line) {
 
 } // namespace
 
+namespace {
+
+void refuse_gzip(const fs::path& file) {
+    std::ifstream probe(file, std::ios::binary);
+    if (!probe) throw InputError(fmt::format("{}: cannot open particle file", file.string()));
+    std::array<char, 2> magic{};
+    probe.read(magic.data(), 2);
+    if (file.extension() == ".gz" || (magic[0] == '\x1f' && magic[1] == '\x8b'))
+        throw InputError(fmt::format("{}: gzip-compressed files are not read directly; "
+                                     "run `gunzip -k {}` and pass the unzipped file",
+                                     file.string(), file.string()));
+}
+
+/// A file without particles or with a duplicate id is refused: ids key contact history and
+/// output, and a duplicate would silently merge two particles.
+void check_ids(const ParticleFile& out, const fs::path& file) {
+    if (out.particles.empty())
+        throw InputError(fmt::format("{}: no particles in the file", file.string()));
+    std::vector<std::uint32_t> ids(out.particles.size());
+    std::transform(out.particles.begin(), out.particles.end(), ids.begin(),
+                   [](const ParticleRecord& r) { return r.id; });
+    std::sort(ids.begin(), ids.end());
+    if (const auto dup = std::adjacent_find(ids.begin(), ids.end()); dup != ids.end())
+        throw InputError(fmt::format("{}: particle id {} occurs more than once", file.string(),
+                                     *dup));
+}
+
+} // namespace
+
 ParticleFile read_particles(const fs::path& file) {
-    {
-        std::ifstream probe(file, std::ios::binary);
-        if (!probe) throw InputError(fmt::format("{}: cannot open particle file", file.string()));
-        std::array<char, 2> magic{};
-        probe.read(magic.data(), 2);
-        if (file.extension() == ".gz" || (magic[0] == '\x1f' && magic[1] == '\x8b'))
-            throw InputError(fmt::format("{}: gzip-compressed files are not read directly; "
-                                         "run `gunzip -k {}` and pass the unzipped file",
-                                         file.string(), file.string()));
-    }
+    refuse_gzip(file);
     LineReader in(file);
     ParticleFile out;
     std::string first;
@@ -430,18 +453,23 @@ ParticleFile read_particles(const fs::path& file) {
     if (head.starts_with("ITEM:")) read_dump(in, first, out);
     else if (looks_like_csv_header(head)) read_csv(in, first, out);
     else read_data(in, out); // line 1 of a data file is a free title
-    if (out.particles.empty())
-        throw InputError(fmt::format("{}: no particles in the file", file.string()));
-
-    // Ids key contact history and output; a duplicate would silently merge two particles.
-    std::vector<std::uint32_t> ids(out.particles.size());
-    std::transform(out.particles.begin(), out.particles.end(), ids.begin(),
-                   [](const ParticleRecord& r) { return r.id; });
-    std::sort(ids.begin(), ids.end());
-    if (const auto dup = std::adjacent_find(ids.begin(), ids.end()); dup != ids.end())
-        throw InputError(fmt::format("{}: particle id {} occurs more than once", file.string(),
-                                     *dup));
+    check_ids(out, file);
     return out;
+}
+
+void for_each_dump_frame(const fs::path& file, const std::function<void(DumpSnapshot&&)>& use) {
+    refuse_gzip(file);
+    LineReader in(file);
+    std::string first;
+    while (in.next(first) && trim(first).empty()) {}
+    if (!trim(first).starts_with("ITEM:")) in.fail("not a LAMMPS text dump (no ITEM: line)");
+    for (const DumpFrame& f : dump_frames(in, first)) {
+        DumpSnapshot d;
+        d.step = f.step;
+        read_dump_frame(in, f, d.particles);
+        check_ids(d.particles, file);
+        use(std::move(d));
+    }
 }
 
 void check_particle_geometry(const ParticleFile& f, double lx, double ly, const fs::path& name) {

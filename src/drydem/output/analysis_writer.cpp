@@ -226,6 +226,8 @@ void add_binder(nlohmann::ordered_json& j, const AnalysisResult& r, const Analys
                              {"bottom10_over_mean", bp.bottom10},
                              {"top10_over_mean", bp.top10},
                              {"mass_balance", bp.mass_balance},
+                             {"porosity_frames", bp.porosity_frames},
+                             {"shrinkage", bp.porosity_frames > 0 ? "the run's dump frames" : "affine"},
                              {"drying_rate_factors", rates}};
 }
 
