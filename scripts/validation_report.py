@@ -198,7 +198,7 @@ class Report:
         if len(done) < 2:
             return
         fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
-        for ax, qi in zip(axes, [0, 2, 3]):
+        for ax, qi in zip(axes, [0, 1, 2]):  # Eq. 2 is a recipe identity: not plotted
             ax.errorbar([_number(d[0]) for d in done], [d[1][qi][0] for d in done],
                         yerr=[d[1][qi][1] for d in done], fmt="o-", capsize=4)
             ax.set_xlabel(xlabel), ax.set_ylabel(QUANTITIES[qi][1])
