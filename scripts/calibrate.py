@@ -43,6 +43,25 @@ warnings.filterwarnings("ignore", message=".*balance properties of Sobol.*")
 
 STOP = {"signal": 0}
 CHILDREN = {}
+EDGE = 0.02  # a surrogate minimum within 2 % of the range from a bound counts as at the bound
+
+
+def bounds_reached(surrogate_minimum, region):
+    """For each parameter (unit-cube coordinates): "lower" or "upper" when the surrogate's minimum
+    lies at that bound, so the best fit may lie outside the search box and the bound, not the
+    targets, set the calibrated value; None otherwise. `region` (points x parameters) is the part
+    of the cube within chi2 + 1 of the minimum; a minimum at the edge of a region that does not
+    reach the bound is not flagged."""
+    flags = []
+    for j, x in enumerate(surrogate_minimum):
+        lo, hi = float(np.min(region[:, j])), float(np.max(region[:, j]))
+        if x <= EDGE and lo <= EDGE:
+            flags.append("lower")
+        elif x >= 1.0 - EDGE and hi >= 1.0 - EDGE:
+            flags.append("upper")
+        else:
+            flags.append(None)
+    return flags
 
 
 def on_signal(sig, frame):
@@ -430,10 +449,12 @@ class Calibration:
                "completed": len(done), "targets": {}, "region_points": int(len(region)),
                "method": "per-target Gaussian processes (Matern 5/2 + white noise); uncertainty: the range "
                          "of each parameter over the region where the predicted chi2 is within 1 of its minimum"}
+        at_bound = bounds_reached(xs, region)
         for j, p in enumerate(self.params):
             lo_hi = self.from_unit([region[:, j].min() if k == j else 0.5 for k in range(self.d)])[j], \
                 self.from_unit([region[:, j].max() if k == j else 0.5 for k in range(self.d)])[j]
-            res["best"][p["key"]] = {"value": best["parameters"][j], "range_delta_chi2_1": list(lo_hi)}
+            res["best"][p["key"]] = {"value": best["parameters"][j], "range_delta_chi2_1": list(lo_hi),
+                                     "surrogate_minimum_at_bound": at_bound[j]}
             res["surrogate_minimum"][p["key"]] = self.from_unit(xs)[j]
         mu, sd = self.predict(gps, Xd[ib:ib + 1])
         for k, tg in enumerate(self.targets):
@@ -569,6 +590,12 @@ def main():
     for k, v in res["best"].items():
         cal.say(f"best {k} = {v['value']:.6g} (chi2 within 1 of the minimum: {v['range_delta_chi2_1'][0]:.6g} .. "
                 f"{v['range_delta_chi2_1'][1]:.6g}; surrogate minimum {res['surrogate_minimum'][k]:.6g})")
+    for k, v in res["best"].items():
+        if v["surrogate_minimum_at_bound"]:
+            p = next(p for p in cal.params if p["key"] == k)
+            cal.say(f"warning: the surrogate's minimum of {k} lies at its {v['surrogate_minimum_at_bound']} bound "
+                    f"({p['min' if v['surrogate_minimum_at_bound'] == 'lower' else 'max']:.6g}): the bound, not the "
+                    f"targets, sets this value; if a value beyond it is physical, widen the bound and --resume")
     for q, t in res["targets"].items():
         cal.say(f"  {q}: {t['at_best']:.5g} at the best evaluation, measured {t['measured']:.5g} +- {t['uncertainty']:.3g} {t['unit']}")
     if not args.no_plots:

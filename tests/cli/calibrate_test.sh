@@ -75,4 +75,31 @@ for n in ('surrogate', 'targets'):
 print('calibration ok: best', {k: round(v['value'], 4) for k, v in best.items()}, 'chi2', res['best_evaluation_misfit_chi2'])
 PY
 "$drydem" check "$cal/calibrated.toml" > /dev/null || fail "calibrated.toml does not validate"
+
+# A minimum at a bound is flagged (pure function of the surrogate's minimum and its chi2+1 region).
+src=$(cd "$(dirname "$0")/../.." && pwd)
+/usr/bin/python3 - "$src/scripts" "$cal/result.json" <<'PY' || fail "bounds_reached"
+import json, sys
+import numpy as np
+sys.path.insert(0, sys.argv[1])
+from calibrate import bounds_reached
+region = np.array([[0.0, 0.4], [0.1, 0.5], [0.05, 0.6]])
+assert bounds_reached([0.0, 0.5], region) == ["lower", None]
+assert bounds_reached([0.3, 1.0], np.array([[0.2, 0.9], [0.4, 1.0]])) == [None, "upper"]
+# a minimum at the edge of the unit cube flagged only where the region reaches that bound
+assert bounds_reached([0.01, 0.5], np.array([[0.05, 0.5], [0.3, 0.5]])) == [None, None]
+for k, v in json.load(open(sys.argv[2]))["best"].items():
+    assert v["surrogate_minimum_at_bound"] in (None, "lower", "upper"), (k, v)
+PY
+
+# Resumed with a narrower bound: refused (the ledger's evaluations may lie outside); with a wider
+# one and one more evaluation: continued, the finished evaluations kept.
+sed 's/^max = 1.2$/max = 1.0/' "$cfg" > "$work/narrow.toml"
+"$drydem" calibrate "$work/narrow.toml" -o "$cal" --resume --quiet > "$work/narrow.txt" 2>&1
+rc=$?
+[[ $rc -eq 2 ]] && grep -q 'min/max widen' "$work/narrow.txt" || fail "a narrowed bound on --resume: exit $rc: $(cat "$work/narrow.txt")"
+sed -e 's/^max = 1.2$/max = 1.5/' -e 's/^evaluations = 4$/evaluations = 5/' "$cfg" > "$work/wide.toml"
+"$drydem" calibrate "$work/wide.toml" -o "$cal" --resume --jobs 1 --threads 1 --quiet || fail "a widened bound on --resume"
+grep -q "4 done before" "$cal/log.txt" || fail "the widened calibration did not keep the 4 evaluations"
+[[ $(ls -d "$cal"/eval_*_s12345 | wc -l) -eq 5 ]] || fail "not 5 evaluation folders after widening"
 echo "calibrate test passed"

@@ -39,6 +39,19 @@ std::string first_difference(const std::string& a, const std::string& b) {
     }
 }
 
+/// True when `now` has the parameters of `before` (same keys, order and scales), each range
+/// containing the old one: a calibration whose best fit sat at a bound may continue wider.
+bool bounds_widened(const nlohmann::json& before, const nlohmann::json& now) {
+    if (before.size() != now.size()) return false;
+    for (std::size_t i = 0; i < before.size(); ++i) {
+        const auto &b = before[i], &n = now[i];
+        if (b["key"] != n["key"] || b["log"] != n["log"]) return false;
+        if (n["min"].get<double>() > b["min"].get<double>() || n["max"].get<double>() < b["max"].get<double>())
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 int run_calibrate(const Config& c, const CalibrateOptions& o) {
@@ -52,14 +65,16 @@ int run_calibrate(const Config& c, const CalibrateOptions& o) {
         if (!fs::exists(spec_file) || !fs::exists(dir / "ledger.json"))
             throw InputError(fmt::format("--resume: {} holds no calibration (no calibration.json and ledger.json); "
                                          "start one without --resume", dir.string()));
-        // The same calibration, only the budget may grow: a changed parameter, target or run config
-        // would mix evaluations of two problems in one ledger.
+        // The same calibration, only the budget may grow and a bound widen: a changed parameter,
+        // target or run config would mix evaluations of two problems in one ledger, while every
+        // finished evaluation still lies inside widened bounds.
         nlohmann::json stored = nlohmann::json::parse(read_text(spec_file));
         for (const char* k : {"parameters", "targets", "seeds", "initial_points", "sampler", "base_seed"})
-            if (stored[k] != spec[k])
+            if (stored[k] != spec[k] && !(std::string_view(k) == "parameters" && bounds_widened(stored[k], spec[k])))
                 throw InputError(fmt::format("--resume: the config's calibration.{} ({}) differs from the one of the "
                                              "calibration in {} ({}); allowed: the same calibration, only "
-                                             "calibration.evaluations and [scheduler] may change",
+                                             "calibration.evaluations and [scheduler] may change and a parameter's "
+                                             "min/max widen",
                                              k, spec[k].dump(), dir.string(), stored[k].dump()));
         // The runs' config: identical but for the keys a resume may change.
         auto strip = [](const std::string& text) {
