@@ -21,7 +21,8 @@
 # usage: bench/validation.sh STEP...     (then scripts/validation_report.py writes the tables/plots
 #        into docs/data/validation/report.md and docs/figures/validation_*.png)
 # environment: THREADS (1) threads per run, OUT (results), DRYDEM (build/drydem; a frozen copy
-#   keeps a long queue on one binary while the tree is rebuilt)
+#   keeps a long queue on one binary while the tree is rebuilt), CAL_EVALUATIONS (the example's
+#   14): the calibration's budget (a resumed calibration may grow or stop it)
 # Every finished study's small files (study.json/csv; per run config, summary, analysis files, a
 # thinned time series) are copied to docs/data/validation/STEP, so the report is rebuilt from a
 # clean clone; the runs themselves take days on one 2-core machine (docs/validation.md).
@@ -87,8 +88,10 @@ PY
 calibrate() {
   local resume=()
   if [[ -f $cal/ledger.json ]]; then resume=(--resume); fi
+  local budget=()
+  if [[ -n ${CAL_EVALUATIONS:-} ]]; then budget=(--set "calibration.evaluations=$CAL_EVALUATIONS"); fi
   "$drydem" calibrate "$here/examples/calibrate_20.1.toml" --jobs 2 --threads 1 --quiet \
-    "${resume[@]}" -o "$cal" > "$out/calibrate_20.1.log" 2>&1 ||
+    "${resume[@]}" "${budget[@]}" -o "$cal" > "$out/calibrate_20.1.log" 2>&1 ||
     echo "== cal20: drydem calibrate exited $? (see $out/calibrate_20.1.log)" >&2
   mkdir -p "$archive/cal20"
   cp "$cal"/calibration.json "$cal"/ledger.json "$cal"/evaluations.csv "$cal"/result.json \

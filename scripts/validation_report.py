@@ -92,8 +92,10 @@ class Report:
             res = json.loads((d / "result.json").read_text())
             for k, v in res["best"].items():
                 lo, hi = v["range_delta_chi2_1"]
+                edge = v.get("surrogate_minimum_at_bound")
                 self.say(f"- best `{k}` = {v['value']:.4g} (Δχ² = 1 range {lo:.4g} … {hi:.4g}; "
-                         f"surrogate minimum {res['surrogate_minimum'][k]:.4g})")
+                         f"surrogate minimum {res['surrogate_minimum'][k]:.4g}"
+                         + (f", **at the {edge} bound of the search**" if edge else "") + ")")
             for q, t in res["targets"].items():
                 self.say(f"- {q}: {t['at_best']:.4g} at the best evaluation; target {t['measured']:.4g} ± "
                          f"{t['uncertainty']:.3g} {t['unit']}")
