@@ -5,7 +5,7 @@ bench/validation.sh archives in docs/data/validation/STEP (so it runs from a cle
 Writes docs/data/validation/report.md (every table of docs/validation.md's "Calibration and blind
 validation", regenerated) and docs/figures/validation_*.png: the loadings beside the paper's
 calibration (Fig. 6), the pore sizes at 25.2 mg/cm2 (Fig. 7), the box-size, time-scaling and
-time-step series. A step that has not run yet is reported as such, never invented.
+time-step series, the seed-to-seed spread. A step that has not run yet is reported as such, never invented.
 usage: scripts/validation_report.py [DATA_DIR] [FIGURE_DIR]
 """
 import csv
@@ -249,6 +249,39 @@ class Report:
             self.say(f"| {label} | {fmt(*h, 2)} | {dh} | {fmt(*p, 4)} | {dp} | {fmt(*e2, 4)} |")
         self.say("")
 
+    def seeds(self):
+        """Seed-to-seed spread of every step with two or more seeds (the yardstick of every other
+        comparison): a table of the spread and a plot of each seed's deviation from its step's mean."""
+        base = ROOT / "docs" / "data" / "integrator_comparison"
+        steps = [(name, self.step(name)) for name in
+                 ("v20", "blind25", "blind30", "blind35", "box40", "box56", "k3e6", "k3e7")]
+        for label, prefix in (("semi-implicit 1e-10 s", "semi_s"), ("semi-implicit 5e-11 s", "semi5_s")):
+            r = [json.loads(f.read_text()) for f in sorted(base.glob(prefix + "*/summary.json"))]
+            steps.append((label, [d for d in r if d.get("status") == "completed"]))
+        steps = [(n, r) for n, r in steps if len(r) >= 2]
+        self.say("## Seeds (the spread every comparison is measured against)", "",
+                 "| step | seeds | thickness s.d. (µm) | s.d. / mean | porosity s.d. | standard error of the mean thickness (µm) |",
+                 "|---|---|---|---|---|---|")
+        if not steps:
+            self.say("| no step with two or more seeds yet | | | | | |", "")
+            return
+        fig, ax = plt.subplots(figsize=(7, 3.6))
+        for k, (name, r) in enumerate(steps):
+            h = [x["final_thickness_um"] for x in r]
+            m, sd, n = mean_sd(h)
+            _, psd, _ = mean_sd([x["porosity"] for x in r])
+            self.say(f"| {name} | {n} | {sd:.2f} | {100 * sd / m:.2f} % | {psd:.4f} | {sd / math.sqrt(n):.2f} |")
+            ax.plot([k] * n, [v - m for v in h], "o", color="C0")
+            ax.errorbar([k + 0.15], [0.0], yerr=[sd], fmt="_", color="C3", capsize=4)
+        ax.axhline(0.0, color="0.7", lw=0.8)
+        ax.set_xticks(range(len(steps)), [n for n, _ in steps], rotation=30, ha="right", fontsize=8)
+        ax.set_ylabel("seed's thickness − step mean (µm)")
+        ax.set_title("Seed-to-seed spread of the final thickness (red: ± s.d.)")
+        fig.tight_layout()
+        fig.savefig(self.figures / "validation_seeds.png", dpi=120)
+        plt.close(fig)
+        self.say("")
+
     def write(self):
         self.figures.mkdir(parents=True, exist_ok=True)
         self.calibration()
@@ -259,6 +292,7 @@ class Report:
         self.series("Time-scaling factor k (20.1 mg/cm², 40 × 40 µm, Hamaker factor = k, capillary factor 9e3)",
                     [(3e6, "k3e6"), (1e7, "box40"), (3e7, "k3e7")], "k", "validation_k.png", log=True)
         self.time_step()
+        self.seeds()
         self.sensitivities()
         (self.data / "report.md").write_text("\n".join(self.lines) + "\n")
         print(f"wrote {self.data / 'report.md'} and {self.figures}/validation_*.png")
