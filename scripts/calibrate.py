@@ -46,6 +46,21 @@ CHILDREN = {}
 EDGE = 0.02  # a surrogate minimum within 2 % of the range from a bound counts as at the bound
 
 
+def curve_value(timeseries_csv, column, at):
+    """The run's `column` at process time `at` [s], linear between the time series' rows. A run
+    that ended before `at` gives its last row: it ends when the film is dry, and a dry film keeps
+    its thickness. None when the file or the column is missing."""
+    try:
+        with open(timeseries_csv, newline="") as f:
+            rows = [(float(r["process_time_s"]), float(r[column])) for r in csv.DictReader(f)]
+    except (OSError, KeyError, ValueError):
+        return None
+    if not rows:
+        return None
+    t = [r[0] for r in rows]
+    return float(np.interp(at, t, [r[1] for r in rows]))
+
+
 def bounds_reached(surrogate_minimum, region):
     """For each parameter (unit-cube coordinates): "lower" or "upper" when the surrogate's minimum
     lies at that bound, so the best fit may lie outside the search box and the bound, not the
@@ -109,6 +124,8 @@ class Calibration:
             self.spec = json.load(f)
         self.params = self.spec["parameters"]
         self.targets = self.spec["targets"]
+        for tg in self.targets:  # a point of a curve carries its own name ("film_thickness_at_40s")
+            tg.setdefault("name", tg["quantity"])
         self.d = len(self.params)
         self.ledger_path = os.path.join(self.dir, "ledger.json")
         self.log = open(os.path.join(self.dir, "log.txt"), "a")
@@ -238,6 +255,10 @@ class Calibration:
                 s = json.load(f)
             error = s.get("error", "")
             for tg in self.targets:
+                if "at_s" in tg:
+                    values[tg["name"]] = curve_value(os.path.join(t["dir"], "timeseries.csv"),
+                                                     tg["timeseries_column"], tg["at_s"])
+                    continue
                 v = s.get(tg["summary_key"])
                 if v is None and tg["summary_key"] != "final_thickness_um":
                     try:
@@ -245,13 +266,13 @@ class Calibration:
                             v = json.load(f).get(tg["summary_key"])
                     except (OSError, ValueError):
                         v = None
-                values[tg["quantity"]] = v
+                values[tg["name"]] = v
         except (OSError, ValueError):
             error = f"no summary.json (exit code {code}): {self.console_tail(t)}"
         if final and state in ("partial", "new"):
             state = "failed"
-        if state == "completed" and any(values.get(tg["quantity"]) is None for tg in self.targets):
-            state, error = "failed", "a target quantity is missing from summary.json (analysis.at_end = false?)"
+        if state == "completed" and any(values.get(tg["name"]) is None for tg in self.targets):
+            state, error = "failed", "a target quantity is missing from the run's summary.json, analysis.json or timeseries.csv (analysis.at_end = false?)"
         ev["runs"][str(t["seed"])] = {"dir": os.path.basename(t["dir"]), "state": state, "values": values,
                                       "error": error}
         self.save()
@@ -275,10 +296,10 @@ class Calibration:
             ev["mean"], ev["std"] = {}, {}
             chi2 = 0.0
             for tg in self.targets:
-                ys = [float(r["values"][tg["quantity"]]) for r in ok]
+                ys = [float(r["values"][tg["name"]]) for r in ok]
                 m = float(np.mean(ys))
-                ev["mean"][tg["quantity"]] = m
-                ev["std"][tg["quantity"]] = float(np.std(ys, ddof=1)) if len(ys) > 1 else 0.0
+                ev["mean"][tg["name"]] = m
+                ev["std"][tg["name"]] = float(np.std(ys, ddof=1)) if len(ys) > 1 else 0.0
                 chi2 += ((m - tg["value"]) / tg["uncertainty"]) ** 2
             ev["misfit"] = chi2
         self.save()
@@ -304,7 +325,7 @@ class Calibration:
         X = np.array([self.to_unit(e["parameters"]) for e in ev] + list(extra_x))
         gps = []
         for k, tg in enumerate(self.targets):
-            y = np.array([e["mean"][tg["quantity"]] for e in ev] + [ey[k] for ey in extra_y])
+            y = np.array([e["mean"][tg["name"]] for e in ev] + [ey[k] for ey in extra_y])
             if kernels is None:
                 kernel = (ConstantKernel(1.0, (1e-3, 1e3)) * Matern(length_scale=[0.5] * self.d, length_scale_bounds=(0.05, 20.0), nu=2.5)
                           + WhiteKernel(1e-2, (1e-6, 1.0)))
@@ -413,14 +434,14 @@ class Calibration:
             head = ["evaluation", "kind", "status"] + [p["key"] for p in self.params]
             for tg in self.targets:
                 u = f"_{tg['unit']}".replace("/", "_").replace("^", "") if tg["unit"] else ""
-                head += [f"{tg['quantity']}{u}", f"{tg['quantity']}_std{u}"]
+                head += [f"{tg['name']}{u}", f"{tg['name']}_std{u}"]
             head += ["misfit_chi2", "runs"]
             w.writerow(head)
             for e in self.ledger["evaluations"]:
                 row = [e["id"], e["kind"], e["status"]] + [f"{v:.10g}" for v in e["parameters"]]
                 for tg in self.targets:
                     if e["status"] == "done":
-                        row += [f"{e['mean'][tg['quantity']]:.8g}", f"{e['std'][tg['quantity']]:.4g}"]
+                        row += [f"{e['mean'][tg['name']]:.8g}", f"{e['std'][tg['name']]:.4g}"]
                     else:
                         row += ["", ""]
                 row += ["" if e.get("misfit") is None else f"{e['misfit']:.6g}",
@@ -458,8 +479,8 @@ class Calibration:
             res["surrogate_minimum"][p["key"]] = self.from_unit(xs)[j]
         mu, sd = self.predict(gps, Xd[ib:ib + 1])
         for k, tg in enumerate(self.targets):
-            res["targets"][tg["quantity"]] = {"measured": tg["value"], "uncertainty": tg["uncertainty"],
-                                              "unit": tg["unit"], "at_best": best["mean"][tg["quantity"]],
+            res["targets"][tg["name"]] = {"measured": tg["value"], "uncertainty": tg["uncertainty"],
+                                              "unit": tg["unit"], "at_best": best["mean"][tg["name"]],
                                               "predicted_at_best": float(mu[0, k]), "predicted_sd": float(sd[0, k])}
         with open(os.path.join(self.dir, "result.json"), "w") as f:
             json.dump(res, f, indent=2)
@@ -545,11 +566,11 @@ class Calibration:
         for k, tg in enumerate(self.targets):
             ax = axes[k, 0]
             ids = [e["id"] for e in done]
-            ax.errorbar(ids, [e["mean"][tg["quantity"]] for e in done],
-                        yerr=[e["std"][tg["quantity"]] for e in done], fmt="o", ms=4, capsize=2)
+            ax.errorbar(ids, [e["mean"][tg["name"]] for e in done],
+                        yerr=[e["std"][tg["name"]] for e in done], fmt="o", ms=4, capsize=2)
             ax.axhspan(tg["value"] - tg["uncertainty"], tg["value"] + tg["uncertainty"], color="g", alpha=0.2)
             ax.axhline(tg["value"], color="g", lw=1, label="measured")
-            ax.set_ylabel(f"{tg['quantity']}" + (f" [{tg['unit']}]" if tg["unit"] else ""))
+            ax.set_ylabel(f"{tg['name']}" + (f" [{tg['unit']}]" if tg["unit"] else ""))
         axes[-1, 0].set_xlabel("evaluation")
         axes[0, 0].legend(fontsize=8)
         fig.tight_layout()

@@ -55,7 +55,17 @@ assert [r['kind'] for r in rows] == ['initial'] * 3 + ['expected improvement'], 
 for r in rows:
     assert 0.3 <= float(r['contact.friction']) <= 1.2 and 0.6 <= float(r['formulation.cb_porosity']) <= 0.8, r
     assert 5 < float(r['final_thickness_um']) < 12 and 0.1 < float(r['cb_binder_porosity_eq2']) < 0.9, r
+# the curve point: the run's film thickness at 3 s process time, read here from its own time series
+for r in rows:
+    ts = list(csv.DictReader(open(f"{d}/{r['runs']}/timeseries.csv")))
+    t = [float(x['process_time_s']) for x in ts]
+    h = [float(x['film_thickness_um']) for x in ts]
+    k = next(i for i in range(1, len(t)) if t[i] >= 3.0)
+    expect = h[k - 1] + (h[k] - h[k - 1]) * (3.0 - t[k - 1]) / (t[k] - t[k - 1])
+    got = float(r['film_thickness_at_3s_um'])
+    assert abs(got - expect) < 1e-6 * expect and t[k - 1] < 3.0, (r['runs'], got, expect)
 res = json.load(open(d + '/result.json'))
+assert 'film_thickness_at_3s' in res['targets'], res['targets']
 best = res['best']
 for k, (lo, hi) in {'contact.friction': (0.3, 1.2), 'formulation.cb_porosity': (0.6, 0.8)}.items():
     v = best[k]['value']

@@ -121,4 +121,45 @@ TEST(CalibrationConfig, CalibrateNeedsParametersAndTargetsAndWarnsWhenUnderdeter
     EXPECT_NE(e.find("formulation.cb_diameter = 2e-05 (max) makes the run configuration invalid"), std::string::npos) << e;
 }
 
+TEST(CalibrationConfig, APointOfADryingCurveTakesItsProcessTime) {
+    // Fig. 5 as targets: the film thickness at two process times, each its own named target
+    const auto point = [](const std::string& at, const std::string& value) {
+        return "[[calibration.targets]]\nquantity = \"film_thickness\"\nat = " + at + "\nvalue = " + value +
+               "\nuncertainty = \"1.5 um\"\n";
+    };
+    const Config c = load_config(friction + point("\"40 s\"", "\"150 um\"") + point("1.5", "\"120 um\"") + thickness,
+                                 "test.toml");
+    ASSERT_EQ(c.calibration_targets.size(), 3u);
+    EXPECT_DOUBLE_EQ(c.calibration_targets[0].at, 40.0);
+    EXPECT_DOUBLE_EQ(c.calibration_targets[1].at, 1.5);
+    EXPECT_LT(c.calibration_targets[2].at, 0.0); // a result of the whole run has none
+    EXPECT_EQ(calibration_target_name(c.calibration_targets[0]), "film_thickness_at_40s");
+    EXPECT_EQ(calibration_target_name(c.calibration_targets[2]), "final_thickness");
+    EXPECT_TRUE(check_calibration(c).empty()); // three distinct targets for one parameter
+    const auto spec = calibration_spec(c, "/x/drydem");
+    EXPECT_EQ(spec["targets"][0]["name"], "film_thickness_at_40s");
+    EXPECT_DOUBLE_EQ(spec["targets"][0]["at_s"].get<double>(), 40.0);
+    EXPECT_EQ(spec["targets"][0]["timeseries_column"], "film_thickness_um");
+    EXPECT_NEAR(spec["targets"][1]["value"].get<double>(), 120.0, 1e-9);
+    EXPECT_FALSE(spec["targets"][2].contains("at_s")); // older calibrations resume unchanged
+    // the same point twice counts once
+    const auto w = check_calibration(load_config(friction + point("\"40 s\"", "\"150 um\"") +
+                                                     point("\"40 s\"", "\"151 um\""), "t"));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].find("more than once"), std::string::npos) << w[0];
+
+    const std::string missing = input_error(
+        "[[calibration.targets]]\nquantity = \"film_thickness\"\nvalue = \"150 um\"\nuncertainty = \"1 um\"\n");
+    EXPECT_NE(missing.find("calibration.targets[1]': missing 'at'"), std::string::npos) << missing;
+    const std::string not_curve = input_error(
+        "[[calibration.targets]]\nquantity = \"final_thickness\"\nat = \"40 s\"\nvalue = \"84 um\"\nuncertainty = \"1 um\"\n");
+    EXPECT_NE(not_curve.find("calibration.targets[1].at': \"40 s\" is not allowed for \"final_thickness\""),
+              std::string::npos) << not_curve;
+    EXPECT_NE(not_curve.find("\"film_thickness\""), std::string::npos) << not_curve;
+    const std::string negative = input_error(point("\"-3 s\"", "\"150 um\""));
+    EXPECT_NE(negative.find("calibration.targets[1].at (film_thickness)"), std::string::npos) << negative;
+    const std::string length = input_error(point("\"40 um\"", "\"150 um\""));
+    EXPECT_NE(length.find("calibration.targets[1].at (film_thickness)"), std::string::npos) << length;
+}
+
 } // namespace

@@ -238,7 +238,16 @@ void parse_calibration_parameters(const toml::node& n, Config& c) {
     }
 }
 
-/// [[calibration.targets]]: quantity (calibration_quantities()), value, uncertainty (with units).
+/// The quantities that are points of a curve (they take `at`), quoted, for messages.
+std::string curve_quantities() {
+    std::string names;
+    for (const auto& q : calibration_quantities())
+        if (!q.timeseries_column.empty()) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", q.name);
+    return names;
+}
+
+/// [[calibration.targets]]: quantity (calibration_quantities()), value, uncertainty (with units),
+/// and for a point of a curve its process time `at`.
 void parse_calibration_targets(const toml::node& n, Config& c) {
     const toml::array* arr = n.as_array();
     if (!arr)
@@ -250,7 +259,7 @@ void parse_calibration_targets(const toml::node& n, Config& c) {
     for (std::size_t i = 0; i < arr->size(); ++i) {
         const std::string label = fmt::format("calibration.targets[{}]", i + 1);
         const toml::table& t =
-            calibration_entry((*arr)[i], label, {"quantity", "value", "uncertainty"}, {"quantity", "value", "uncertainty"});
+            calibration_entry((*arr)[i], label, {"quantity", "value", "uncertainty", "at"}, {"quantity", "value", "uncertainty"});
         const auto name = t["quantity"].value<std::string>();
         const auto& qs = calibration_quantities();
         auto q = std::find_if(qs.begin(), qs.end(), [&](const CalibrationQuantity& x) { return name && x.name == *name; });
@@ -270,6 +279,19 @@ void parse_calibration_targets(const toml::node& n, Config& c) {
                                              node_text(v), x, node_text(v)));
             check_range(g, x, node_text(v));
             (which[0] == 'v' ? target.value : target.uncertainty) = x;
+        }
+        if (!q->timeseries_column.empty() && !t.contains("at"))
+            throw InputError(fmt::format("config key '{}': missing 'at' (\"{}\" is a point of a curve: give its "
+                                         "process time, e.g. at = \"40 s\")", label, *name));
+        if (t.contains("at")) {
+            if (q->timeseries_column.empty())
+                throw InputError(fmt::format("config key '{}.at': {} is not allowed for \"{}\", a result of the "
+                                             "whole run; allowed only for a point of a curve ({})", label,
+                                             node_text(*t.get("at")), *name, curve_quantities()));
+            const std::string bl = fmt::format("{}.at ({})", label, *name);
+            Field g{bl, &Config::time_step, D::time, config_schema::above(0.0, 1e6), {}, {}};
+            target.at = read_number(*t.get("at"), g);
+            check_range(g, target.at, node_text(*t.get("at")));
         }
         c.calibration_targets.push_back(target);
     }
@@ -371,8 +393,14 @@ const std::vector<CalibrationQuantity>& calibration_quantities() {
         {"process_time_final", T, "process_time_final_s", 1.0, "s", 0.0, 1e6},
         {"psd_peak", L, "psd_peak_um", 1e-6, "um", 0.0, 1e-3},
         {"coordination_mean", N, "coordination_mean", 1.0, "", 0.0, 100.0},
+        // Fig. 5: the top of the highest particle at a process time (a measured drying curve)
+        {"film_thickness", L, "film_thickness_um", 1e-6, "um", 0.0, 1e-2, "film_thickness_um"},
     };
     return q;
+}
+
+std::string calibration_target_name(const CalibrationTarget& t) {
+    return t.at < 0.0 ? t.quantity : fmt::format("{}_at_{:g}s", t.quantity, t.at);
 }
 
 ParsedConfig parse_config(std::string_view toml_text, std::string_view source_name,

@@ -26,6 +26,7 @@ struct CalibrationParameter {
 struct CalibrationTarget {
     std::string quantity;
     double value = 0.0, uncertainty = 0.0;
+    double at = -1.0; ///< process time of a time-series quantity [s] (a point of a measured curve); < 0: none
 };
 /// A run result a calibration can fit: its name in [[calibration.targets]], its dimension, the
 /// key in the run's summary.json and that key's unit (value in summary = SI / si_per_unit).
@@ -36,9 +37,15 @@ struct CalibrationQuantity {
     double si_per_unit;
     std::string_view unit;
     double lo, hi; ///< allowed target values [SI]
+    /// A column of the run's timeseries.csv, read at the target's process time `at` (a point of a
+    /// measured curve, e.g. thickness vs time); empty for a result of the whole run.
+    std::string_view timeseries_column = {};
 };
 /// Every quantity [[calibration.targets]] accepts.
 const std::vector<CalibrationQuantity>& calibration_quantities();
+/// The name a target's values go by in the calibration's ledger, tables and plots: the quantity,
+/// and for a point of a curve its time ("film_thickness_at_40s").
+std::string calibration_target_name(const CalibrationTarget& t);
 
 /// A list default in io/config_keys.def: DRYDEM_LIST(6.5e-6, 7.58e-6) is {6.5e-6, 7.58e-6}.
 #define DRYDEM_LIST(...) {__VA_ARGS__}

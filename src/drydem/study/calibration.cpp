@@ -32,7 +32,7 @@ std::vector<std::string> check_calibration(const Config& c) {
                                      "initial point(s); allowed: at least 2 (the surrogate needs two evaluations)",
                                      init));
     std::set<std::string> quantities;
-    for (const auto& t : c.calibration_targets) quantities.insert(t.quantity);
+    for (const auto& t : c.calibration_targets) quantities.insert(calibration_target_name(t));
     if (quantities.size() < ps.size())
         warnings.push_back(fmt::format(
             "{} independent target(s) for {} parameters: the parameters are not all determined (a valley "
@@ -71,11 +71,17 @@ nlohmann::json calibration_spec(const Config& c, const std::string& drydem_execu
     for (const auto& t : c.calibration_targets) {
         const auto& qs = calibration_quantities();
         const auto q = std::find_if(qs.begin(), qs.end(), [&](const CalibrationQuantity& x) { return x.name == t.quantity; });
-        j["targets"].push_back({{"quantity", t.quantity},
-                                {"summary_key", std::string(q->summary_key)},
-                                {"unit", std::string(q->unit)},
-                                {"value", t.value / q->si_per_unit},
-                                {"uncertainty", t.uncertainty / q->si_per_unit}});
+        nlohmann::json target = {{"quantity", t.quantity},
+                                 {"summary_key", std::string(q->summary_key)},
+                                 {"unit", std::string(q->unit)},
+                                 {"value", t.value / q->si_per_unit},
+                                 {"uncertainty", t.uncertainty / q->si_per_unit}};
+        if (t.at >= 0.0) { // a point of a curve (absent otherwise, so older ledgers resume unchanged)
+            target["name"] = calibration_target_name(t);
+            target["at_s"] = t.at;
+            target["timeseries_column"] = std::string(q->timeseries_column);
+        }
+        j["targets"].push_back(target);
     }
     j["scheduler"] = {{"type", c.scheduler},
                       {"partition", c.slurm_partition},
