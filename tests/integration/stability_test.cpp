@@ -157,3 +157,35 @@ TEST(Stability, SnapInRateUsesTheCurrentGap) {
         EXPECT_NEAR(sim.stability_estimate().stiffness_rate, expected, 1e-3 * expected) << skin;
     }
 }
+
+namespace {
+// A runaway-overlap stop tells a steady load from a blow-up by how far the worst pair moves per
+// step, in units of its smaller radius (creep below 0.1 %).
+TEST(Stability, OverlapStopTellsASteadyLoadFromABlowUp) {
+    EXPECT_NE(Simulation::overlap_cause(0.0).find("steady load"), std::string::npos);
+    EXPECT_NE(Simulation::overlap_cause(5e-5).find("steady load"), std::string::npos); // the 40 um creep
+    EXPECT_NE(Simulation::overlap_cause(0.05).find("could not stop it"), std::string::npos);
+    EXPECT_NE(Simulation::overlap_cause(-0.05).find("could not stop it"), std::string::npos); // bouncing back
+    const ForceField ff = uniform_contact_force_field(6, 1.42e11, 0.3, 0.5, 0.8);
+    const auto stop_message = [&](double dt, double speed) {
+        ParticleStore p;
+        p.add(1, 5, kR, kRhoCb, {20e-6, 20e-6, 20e-6});
+        p.add(2, 5, kR, kRhoCb, {20e-6 + 2 * kR - 1.05 * kR, 20e-6, 20e-6}); // overlap 1.05 r > limit 1
+        p.velocity[0] = {speed, 0.0, 0.0};
+        p.velocity[1] = {-speed, 0.0, 0.0};
+        Simulation sim(p, Box{40e-6, 40e-6}, ff, {dt, 0.1e-6, 1});
+        try {
+            sim.step();
+        } catch (const RunError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no stop");
+    };
+    const std::string creep = stop_message(1e-14, 0.0); // at rest, a tiny step: barely moves
+    EXPECT_NE(creep.find("runaway overlap"), std::string::npos) << creep;
+    EXPECT_NE(creep.find("overlap by 1.05 of the smaller radius"), std::string::npos) << creep;
+    EXPECT_NE(creep.find("steady load"), std::string::npos) << creep;
+    const std::string fast = stop_message(1e-11, 400.0); // 800 m/s together: ~1 % of r per step
+    EXPECT_NE(fast.find("could not stop it"), std::string::npos) << fast;
+}
+} // namespace

@@ -414,35 +414,59 @@ void Simulation::check_health() {
                 p.velocity[i].z, p.force[i].x, p.force[i].y, p.force[i].z, settings_.dt));
     }
     if (stats_.max_overlap_rel <= settings_.overlap_limit) return;
-    // Runaway overlap: find the worst pair (or wall contact) and name it.
-    double worst = 0.0;
+    // Runaway overlap: find the worst pair (or wall contact), name it, and tell a steady load
+    // from a blow-up by how fast it is closing.
+    double worst = 0.0, closing = 0.0, r_min = 0.0;
     std::string what;
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (ff_.substrate_on && p.position[i].z < p.radius[i]) {
             const double rel = 1.0 - p.position[i].z / p.radius[i];
             if (rel > worst) {
                 worst = rel;
+                closing = -p.velocity[i].z;
+                r_min = p.radius[i];
                 what = fmt::format("particle {} (r = {:.4g} um) with the substrate", p.id[i],
                                    p.radius[i] * 1e6);
             }
         }
         for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
             const std::uint32_t j = nl_.partner(s);
-            const double gap = norm(box_.minimum_image(p.position[i], p.position[j])) -
-                               p.radius[i] - p.radius[j];
-            const double rel = -gap / std::min(p.radius[i], p.radius[j]);
+            const Vec3 d = box_.minimum_image(p.position[i], p.position[j]);
+            const double dist = norm(d);
+            const double rel = -(dist - p.radius[i] - p.radius[j]) / std::min(p.radius[i], p.radius[j]);
             if (rel > worst) {
                 worst = rel;
+                closing = dot(p.velocity[i] - p.velocity[j], d) / dist; // normal relative speed
+                r_min = std::min(p.radius[i], p.radius[j]);
                 what = fmt::format("particles {} (r = {:.4g} um) and {} (r = {:.4g} um)", p.id[i],
                                    p.radius[i] * 1e6, p.id[j], p.radius[j] * 1e6);
             }
         }
     }
-    throw RunError(fmt::format(
-        "runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller radius "
-        "(limit {:.3g}). Likely causes: attractive or capillary forces too strong for the contact "
-        "stiffness, or a time step too large (see `drydem check`)",
-        step_, time_, what, worst, settings_.overlap_limit));
+    throw RunError(fmt::format("runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller "
+                               "radius (limit {:.3g}). {}",
+                               step_, time_, what, worst, settings_.overlap_limit,
+                               overlap_cause(closing * settings_.dt / r_min)));
+}
+
+std::string Simulation::overlap_cause(double closing_per_step) {
+    // A blow-up moves a pair by a sizeable part of a radius per step (closing or bouncing back); a
+    // pair pressed by a steady load creeps, its overlap growing over thousands of steps (docs/
+    // model.md C-9, departure 4; a 40 um film at friction 0.3 crept 0.005 % per step). The
+    // boundary, 0.1 % of the smaller radius per step, lies far from both.
+    const double per_step = 100.0 * std::abs(closing_per_step); // % of the smaller radius, either way
+    if (per_step < 0.1)
+        return fmt::format(
+            "The pair moves by only {:.2g} % of the smaller radius per step: a steady load presses it, "
+            "not an instability. The scaled capillary and van der Waals forces (scaling.capillary_factor, "
+            "scaling.hamaker_factor) exceed what the contact stiffness holds at this overlap (docs/model.md "
+            "C-9); raise numerics.overlap_limit (up to 2) to let the run finish, or stiffen the contact "
+            "(materials.cb_youngs_modulus)",
+            per_step);
+    return fmt::format("The pair moves by {:.2g} % of the smaller radius per step: the contact could not stop "
+                       "it. Likely causes: a time step too large for the stiffest force (see `drydem check`), "
+                       "or attractive or capillary forces too strong for the contact stiffness",
+                       per_step);
 }
 
 double Simulation::kinetic_energy() const {

@@ -8,6 +8,7 @@
 #include "drydem/neighbor/neighbor_list.hpp"
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace drydem {
@@ -77,6 +78,9 @@ public:
     void run(std::int64_t steps) {
         for (std::int64_t s = 0; s < steps; ++s) step();
     }
+    /// The cause a runaway-overlap stop names, from the worst pair's closing speed × Δt in units
+    /// of its smaller radius: a steady load (creep) below 0.1 % per step, a blow-up above.
+    [[nodiscard]] static std::string overlap_cause(double closing_per_step);
 
     /// The liquid level z_L(t) [m] as a function of simulated time; evaluated once per step after
     /// the drift (M-9.1 step 3). Without it the level stays where set_liquid_level put it.
