@@ -7,7 +7,8 @@
 #
 # usage: bench/integrator_comparison.sh [RUN...]
 #   RUN  names from the matrix below (default: all); runs that already completed are skipped, so
-#        the script resumes, and two instances with disjoint RUN lists use both cores.
+#        the script resumes (a run stopped midway continues from its checkpoint), and two
+#        instances with disjoint RUN lists use both cores.
 # environment: THREADS (1), OUT (results/integrator_comparison), DRYDEM (build/drydem; a copy
 #   keeps the runs on one binary while the tree is rebuilt)
 # Each completed run's small files (config, summary, analysis JSON, profiles, the thickness
@@ -60,10 +61,15 @@ for entry in "${matrix[@]}"; do
     echo "== $name: $integ, seed $seed, cap $cap s, $threads thread(s) -> $dir ($(date -u +%H:%M))" >&2
     cap_args=()
     if [[ $cap != 0 ]]; then cap_args=(--set "run.time_step=$cap"); fi
-    "$drydem" run --set film.box_x=40um --set film.box_y=40um --seed "$seed" \
-      --set numerics.integrator="$integ" "${cap_args[@]}" \
-      --set 'analysis.transport_voxel_sizes=[]' \
-      --threads "$threads" --quiet --no-plots --overwrite -o "$dir" > "$out/$name.log" 2>&1 || {
+    if [[ -d $dir/checkpoint ]]; then  # stopped earlier (a session's end): continue it
+      echo "== $name: resuming from its checkpoint" >&2
+      run=("$drydem" run --resume "$dir")
+    else
+      run=("$drydem" run --set film.box_x=40um --set film.box_y=40um --seed "$seed"
+        --set numerics.integrator="$integ" "${cap_args[@]}"
+        --set 'analysis.transport_voxel_sizes=[]' --overwrite -o "$dir")
+    fi
+    "${run[@]}" --threads "$threads" --quiet --no-plots >> "$out/$name.log" 2>&1 || {
       echo "== $name failed, see $out/$name.log" >&2
       continue
     }
