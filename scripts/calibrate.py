@@ -257,7 +257,7 @@ class Calibration:
             for tg in self.targets:
                 if "at_s" in tg:
                     values[tg["name"]] = curve_value(os.path.join(t["dir"], "timeseries.csv"),
-                                                     tg["timeseries_column"], tg["at_s"])
+                                                     tg["summary_key"], tg["at_s"])
                     continue
                 v = s.get(tg["summary_key"])
                 if v is None and tg["summary_key"] != "final_thickness_um":

@@ -139,7 +139,7 @@ TEST(CalibrationConfig, APointOfADryingCurveTakesItsProcessTime) {
     const auto spec = calibration_spec(c, "/x/drydem");
     EXPECT_EQ(spec["targets"][0]["name"], "film_thickness_at_40s");
     EXPECT_DOUBLE_EQ(spec["targets"][0]["at_s"].get<double>(), 40.0);
-    EXPECT_EQ(spec["targets"][0]["timeseries_column"], "film_thickness_um");
+    EXPECT_EQ(spec["targets"][0]["summary_key"], "film_thickness_um"); // its timeseries.csv column
     EXPECT_NEAR(spec["targets"][1]["value"].get<double>(), 120.0, 1e-9);
     EXPECT_FALSE(spec["targets"][2].contains("at_s")); // older calibrations resume unchanged
     // the same point twice counts once

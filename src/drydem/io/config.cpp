@@ -238,11 +238,12 @@ void parse_calibration_parameters(const toml::node& n, Config& c) {
     }
 }
 
-/// The quantities that are points of a curve (they take `at`), quoted, for messages.
-std::string curve_quantities() {
+/// The names of the calibration quantities, quoted, for messages; only the points of curves (the
+/// ones that take `at`) with `curves_only`.
+std::string quoted_quantities(bool curves_only) {
     std::string names;
     for (const auto& q : calibration_quantities())
-        if (!q.timeseries_column.empty()) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", q.name);
+        if (q.curve || !curves_only) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", q.name);
     return names;
 }
 
@@ -253,8 +254,6 @@ void parse_calibration_targets(const toml::node& n, Config& c) {
     if (!arr)
         throw InputError(fmt::format("config key 'calibration.targets': {} must be an array of tables "
                                      "([[calibration.targets]])", node_text(n)));
-    std::string names;
-    for (const auto& q : calibration_quantities()) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", q.name);
     c.calibration_targets.clear();
     for (std::size_t i = 0; i < arr->size(); ++i) {
         const std::string label = fmt::format("calibration.targets[{}]", i + 1);
@@ -265,7 +264,7 @@ void parse_calibration_targets(const toml::node& n, Config& c) {
         auto q = std::find_if(qs.begin(), qs.end(), [&](const CalibrationQuantity& x) { return name && x.name == *name; });
         if (q == qs.end())
             throw InputError(fmt::format("config key '{}.quantity': {} is not allowed; allowed: {}", label,
-                                         node_text(*t.get("quantity")), names));
+                                         node_text(*t.get("quantity")), quoted_quantities(false)));
         CalibrationTarget target;
         target.quantity = *name;
         for (const char* which : {"value", "uncertainty"}) {
@@ -280,14 +279,14 @@ void parse_calibration_targets(const toml::node& n, Config& c) {
             check_range(g, x, node_text(v));
             (which[0] == 'v' ? target.value : target.uncertainty) = x;
         }
-        if (!q->timeseries_column.empty() && !t.contains("at"))
+        if (q->curve && !t.contains("at"))
             throw InputError(fmt::format("config key '{}': missing 'at' (\"{}\" is a point of a curve: give its "
                                          "process time, e.g. at = \"40 s\")", label, *name));
         if (t.contains("at")) {
-            if (q->timeseries_column.empty())
+            if (!q->curve)
                 throw InputError(fmt::format("config key '{}.at': {} is not allowed for \"{}\", a result of the "
                                              "whole run; allowed only for a point of a curve ({})", label,
-                                             node_text(*t.get("at")), *name, curve_quantities()));
+                                             node_text(*t.get("at")), *name, quoted_quantities(true)));
             const std::string bl = fmt::format("{}.at ({})", label, *name);
             Field g{bl, &Config::time_step, D::time, config_schema::above(0.0, 1e6), {}, {}};
             target.at = read_number(*t.get("at"), g);
@@ -394,7 +393,7 @@ const std::vector<CalibrationQuantity>& calibration_quantities() {
         {"psd_peak", L, "psd_peak_um", 1e-6, "um", 0.0, 1e-3},
         {"coordination_mean", N, "coordination_mean", 1.0, "", 0.0, 100.0},
         // Fig. 5: the top of the highest particle at a process time (a measured drying curve)
-        {"film_thickness", L, "film_thickness_um", 1e-6, "um", 0.0, 1e-2, "film_thickness_um"},
+        {"film_thickness", L, "film_thickness_um", 1e-6, "um", 0.0, 1e-2, true},
     };
     return q;
 }

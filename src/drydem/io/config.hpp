@@ -37,9 +37,10 @@ struct CalibrationQuantity {
     double si_per_unit;
     std::string_view unit;
     double lo, hi; ///< allowed target values [SI]
-    /// A column of the run's timeseries.csv, read at the target's process time `at` (a point of a
-    /// measured curve, e.g. thickness vs time); empty for a result of the whole run.
-    std::string_view timeseries_column = {};
+    /// A point of a measured curve (e.g. thickness vs time): summary_key is then a column of the
+    /// run's timeseries.csv, read at the target's process time `at`; false for a result of the
+    /// whole run.
+    bool curve = false;
 };
 /// Every quantity [[calibration.targets]] accepts.
 const std::vector<CalibrationQuantity>& calibration_quantities();

@@ -79,7 +79,6 @@ nlohmann::json calibration_spec(const Config& c, const std::string& drydem_execu
         if (t.at >= 0.0) { // a point of a curve (absent otherwise, so older ledgers resume unchanged)
             target["name"] = calibration_target_name(t);
             target["at_s"] = t.at;
-            target["timeseries_column"] = std::string(q->timeseries_column);
         }
         j["targets"].push_back(target);
     }
