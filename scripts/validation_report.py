@@ -5,7 +5,7 @@ bench/validation.sh archives in docs/data/validation/STEP (so it runs from a cle
 Writes docs/data/validation/report.md (every table of docs/validation.md's "Calibration and blind
 validation", regenerated) and docs/figures/validation_*.png: the loadings beside the paper's
 calibration (Fig. 6), the pore sizes at 25.2 mg/cm2 (Fig. 7), the box-size, time-scaling and
-time-step series, the seed-to-seed spread. A step that has not run yet is reported as such, never invented.
+time-step series, where in the drying the time-scaling factor acts, the seed-to-seed spread. A step that has not run yet is reported as such, never invented.
 usage: scripts/validation_report.py [DATA_DIR] [FIGURE_DIR]
 """
 import csv
@@ -24,6 +24,8 @@ ROOT = Path(__file__).resolve().parent.parent
 # through the dryer model, docs/dryer.md D-7.3); with the solids density of Eq. 4 that is its
 # simulated thickness, which it reports within the measurement's spread at every loading (Fig. 6).
 PAPER_POROSITY, PAPER_POROSITY_SD = 0.44, 0.01
+# The film stops following the level once its p99 top stands this far above it (k series).
+FRONT_GAP_UM, FRONT_AFTER_S = 2.0, 20.0
 QUANTITIES = [("final_thickness_um", "thickness (µm)", 2), ("density_g_cm3", "density (g/cm³)", 4),
               ("porosity", "porosity", 4), ("cb_binder_porosity_eq2", "Eq. 2 porosity", 4),
               ("psd_peak_um", "local-thickness peak (µm)", 2)]
@@ -211,6 +213,51 @@ class Report:
         fig.savefig(self.figures / figure, dpi=120)
         plt.close(fig)
 
+    def k_front(self):
+        """Where k acts: the time and level at which the film's top (p99 of the particle tops)
+        stops following the falling liquid level, per run of the k series, and a plot of
+        top − level against process time. Up to that point the three k agree."""
+        self.say("## Where the time-scaling factor acts (p99 top leaves the level)", "",
+                 "The film is taken to stop following the level when its p99 top first stands more than "
+                 f"{FRONT_GAP_UM:g} µm above it (after {FRONT_AFTER_S:g} s).", "",
+                 "| k | seed | leaves the level at (s) | level then (µm) | p99 top then (µm) | final p99 top (µm) | final thickness (µm) |",
+                 "|---|---|---|---|---|---|---|")
+        fig, axes = plt.subplots(1, 2, figsize=(12, 3.8))
+        any_run = False
+        for colour, (k, step) in enumerate([(3e6, "k3e6"), (1e7, "box40"), (3e7, "k3e7")]):
+            for r in self.step(step):
+                ts = r["_dir"] / "timeseries.csv"
+                if not ts.is_file():
+                    continue
+                rows = list(csv.DictReader(ts.open()))
+                t = [float(x["process_time_s"]) for x in rows]
+                level = [float(x["liquid_level_um"]) for x in rows]
+                top = [float(x["film_top_p99_um"]) for x in rows]
+                leave = next((i for i in range(len(t)) if t[i] > FRONT_AFTER_S and top[i] - level[i] > FRONT_GAP_UM), None)
+                cells = (f"{t[leave]:.1f} | {level[leave]:.1f} | {top[leave]:.1f}" if leave is not None
+                         else "never | – | –")
+                self.say(f"| {k:g} | {r['_dir'].name} | {cells} | {top[-1]:.2f} | {r['final_thickness_um']:.2f} |")
+                label = f"k = {k:g}" if not any(l.get_label() == f"k = {k:g}" for l in axes[0].lines) else None
+                axes[0].plot(t, [a - b for a, b in zip(top, level)], color=f"C{colour}", lw=1, label=label)
+                axes[1].plot(t, top, color=f"C{colour}", lw=1, label=label)
+                any_run = True
+        self.say("")
+        if not any_run:
+            plt.close(fig)
+            return
+        axes[0].axhline(FRONT_GAP_UM, color="0.6", ls="--", lw=0.8)
+        axes[0].set_xlabel("process time (s)"), axes[0].set_ylabel("p99 top − liquid level (µm)")
+        axes[0].set_ylim(-1, 15)
+        axes[1].plot(t, level, color="0.5", ls=":", lw=1, label="liquid level")
+        axes[1].set_xlabel("process time (s)"), axes[1].set_ylabel("p99 top (µm)")
+        axes[1].set_xlim(40, None), axes[1].set_ylim(60, 110)
+        for ax in axes:
+            ax.legend(fontsize=8)
+        fig.suptitle("Time-scaling factor k: the film stops following the level earlier at larger k")
+        fig.tight_layout()
+        fig.savefig(self.figures / "validation_k_front.png", dpi=120)
+        plt.close(fig)
+
     def time_step(self):
         """The time-step series: the integrator comparison of issue 11 (paper values, 40 µm box)."""
         base = ROOT / "docs" / "data" / "integrator_comparison"
@@ -291,6 +338,7 @@ class Report:
                     [(40, "box40"), (56, "box56"), (75, "v20")], "box side (µm)", "validation_box.png")
         self.series("Time-scaling factor k (20.1 mg/cm², 40 × 40 µm, Hamaker factor = k, capillary factor 9e3)",
                     [(3e6, "k3e6"), (1e7, "box40"), (3e7, "k3e7")], "k", "validation_k.png", log=True)
+        self.k_front()
         self.time_step()
         self.seeds()
         self.sensitivities()
