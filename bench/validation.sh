@@ -15,6 +15,10 @@
 #   k3e6 k3e7  time-scaling series at 20.1 in the 40 um box (with box40 at k = 1e7): k and the
 #              Hamaker factor together (paper Sec. 4.1 scales the Hamaker constants by k), the
 #              capillary factor kept at 9e3 (the paper's stability compromise), 3 seeds
+#   k3e6cap k3e7cap
+#              the time-scaling series again with the capillary factor scaled like the other
+#              forces (9e3 k / 1e7): does the thickness stop depending on k? (docs/validation.md,
+#              "Where k acts"), 2 seeds
 #   s_hamaker s_restitution s_ecb_lo s_ecb_hi s_cap_lo s_cap_hi
 #              one-at-a-time sensitivities at 20.1 in the 40 um box, 2 seeds each (against box40)
 #   overlap:STEP
@@ -140,6 +144,10 @@ for step in "$@"; do
             --set scaling.time_factor=3e6 --set scaling.hamaker_factor=3e6 ;;
     k3e7) study k3e7 paper_20.1.toml --seeds 3 "${box40[@]}" \
             --set scaling.time_factor=3e7 --set scaling.hamaker_factor=3e7 ;;
+    k3e6cap) study k3e6cap paper_20.1.toml --seeds 2 "${box40[@]}" --set scaling.time_factor=3e6 \
+               --set scaling.hamaker_factor=3e6 --set scaling.capillary_factor=2.7e3 ;;
+    k3e7cap) study k3e7cap paper_20.1.toml --seeds 2 "${box40[@]}" --set scaling.time_factor=3e7 \
+               --set scaling.hamaker_factor=3e7 --set scaling.capillary_factor=2.7e4 ;;
     s_hamaker) study s_hamaker paper_20.1.toml --seeds 2 "${box40[@]}" \
                  --set van_der_waals.hamaker_ncm_cb=9.5e-19 ;;
     s_restitution) study s_restitution paper_20.1.toml --seeds 2 "${box40[@]}" \

@@ -301,7 +301,7 @@ class Report:
         comparison): a table of the spread and a plot of each seed's deviation from its step's mean."""
         base = ROOT / "docs" / "data" / "integrator_comparison"
         steps = [(name, self.step(name)) for name in
-                 ("v20", "blind25", "blind30", "blind35", "box40", "box56", "k3e6", "k3e7")]
+                 ("v20", "blind25", "blind30", "blind35", "box40", "box56", "k3e6", "k3e7", "k3e6cap", "k3e7cap")]
         for label, prefix in (("semi-implicit 1e-10 s", "semi_s"), ("semi-implicit 5e-11 s", "semi5_s")):
             r = [json.loads(f.read_text()) for f in sorted(base.glob(prefix + "*/summary.json"))]
             steps.append((label, [d for d in r if d.get("status") == "completed"]))
@@ -338,6 +338,8 @@ class Report:
                     [(40, "box40"), (56, "box56"), (75, "v20")], "box side (µm)", "validation_box.png")
         self.series("Time-scaling factor k (20.1 mg/cm², 40 × 40 µm, Hamaker factor = k, capillary factor 9e3)",
                     [(3e6, "k3e6"), (1e7, "box40"), (3e7, "k3e7")], "k", "validation_k.png", log=True)
+        self.series("Time-scaling factor k with the capillary factor scaled too (9e3 k / 1e7; 40 × 40 µm)",
+                    [(3e6, "k3e6cap"), (1e7, "box40"), (3e7, "k3e7cap")], "k", "validation_k_cap.png", log=True)
         self.k_front()
         self.time_step()
         self.seeds()
