@@ -39,16 +39,7 @@ keep_small_files() {  # $1 run folder, $2 archive folder
   mkdir -p "$2/analysis"
   cp "$1/config.toml" "$1/summary.json" "$2/"
   cp "$1/analysis/analysis.json" "$1/analysis/profiles.csv" "$2/analysis/"
-  /usr/bin/python3 - "$1/timeseries.csv" "$2/timeseries.csv" <<'PY'
-import sys
-rows = open(sys.argv[1]).read().splitlines()
-head, body = rows[0], rows[1:]
-stride = max(1, -(-len(body) // 500))
-kept = body[::stride]
-if body and kept[-1] != body[-1]:
-    kept.append(body[-1])
-open(sys.argv[2], "w").write("\n".join([head] + kept) + "\n")
-PY
+  /usr/bin/python3 "$here/scripts/thin_timeseries.py" "$1/timeseries.csv" "$2/timeseries.csv"
 }
 
 for entry in "${matrix[@]}"; do

@@ -78,16 +78,7 @@ keep_small_files() {  # $1 study folder, $2 archive folder
     mkdir -p "$dest/analysis"
     cp "$run/config.toml" "$run/summary.json" "$dest/"
     cp "$run"/analysis/*.json "$run"/analysis/*.csv "$dest/analysis/" 2>/dev/null || true
-    /usr/bin/python3 - "$run/timeseries.csv" "$dest/timeseries.csv" <<'PY'
-import sys
-rows = open(sys.argv[1]).read().splitlines()
-head, body = rows[0], rows[1:]
-stride = max(1, -(-len(body) // 500))
-kept = body[::stride]
-if body and kept[-1] != body[-1]:
-    kept.append(body[-1])
-open(sys.argv[2], "w").write("\n".join([head] + kept) + "\n")
-PY
+    /usr/bin/python3 "$here/scripts/thin_timeseries.py" "$run/timeseries.csv" "$dest/timeseries.csv"
   done
 }
 
