@@ -13,6 +13,7 @@ import json
 import math
 import statistics
 import sys
+import tomllib
 from pathlib import Path
 
 import matplotlib
@@ -28,17 +29,19 @@ PAPER_POROSITY, PAPER_POROSITY_SD = 0.44, 0.01
 FRONT_GAP_UM, FRONT_AFTER_S = 2.0, 20.0
 # The time-scaling series at 20.1 mg/cm2, 40 um box: (k, step); box40 is the run at the paper's k.
 K_SERIES = [(3e6, "k3e6"), (1e7, "box40"), (3e7, "k3e7")]
+# Where k acts: the k series and the runs that change the capillary factor, alone or with k.
+FRONT_STEPS = [step for _, step in K_SERIES] + ["s_cap_lo", "s_cap_hi", "k3e6cap", "k3e7cap"]
 QUANTITIES = [("final_thickness_um", "thickness (µm)", 2), ("density_g_cm3", "density (g/cm³)", 4),
               ("porosity", "porosity", 4), ("cb_binder_porosity_eq2", "Eq. 2 porosity", 4),
               ("psd_peak_um", "local-thickness peak (µm)", 2)]
 
 
-def runs(step_dir: Path):
-    """summary.json of every completed run of an archived study, with its folder."""
+def runs(step_dir: Path, every_status=False):
+    """summary.json of every completed run of an archived study (or of every run), with its folder."""
     out = []
     for s in sorted(step_dir.glob("*/summary.json")):
         d = json.loads(s.read_text())
-        if d.get("status") == "completed":
+        if every_status or d.get("status") == "completed":
             d["_dir"] = s.parent
             out.append(d)
     return out
@@ -217,20 +220,27 @@ class Report:
 
     def k_front(self):
         """Where k acts: the time and level at which the film's top (p99 of the particle tops)
-        stops following the falling liquid level, per run of the k series, and a plot of
-        top − level against process time. Up to that point the three k agree."""
+        stops following the falling liquid level, per run of the k series and of the runs that
+        change the capillary factor (read from each run's config), and a plot of top − level
+        against process time. Up to that point every run agrees. Runs stopped by the overlap
+        limit are listed up to their stop."""
         self.say("## Where the time-scaling factor acts (p99 top leaves the level)", "",
                  "The film is taken to stop following the level when its p99 top first stands more than "
-                 f"{FRONT_GAP_UM:g} µm above it (after {FRONT_AFTER_S:g} s).", "",
-                 "| k | seed | leaves the level at (s) | level then (µm) | p99 top then (µm) | final p99 top (µm) | final thickness (µm) |",
-                 "|---|---|---|---|---|---|---|")
+                 f"{FRONT_GAP_UM:g} µm above it (after {FRONT_AFTER_S:g} s). k and the capillary factor "
+                 "as in each run's config.toml.", "",
+                 "| k | capillary factor | seed | leaves the level at (s) | level then (µm) | p99 top then (µm) "
+                 "| final p99 top (µm) | final thickness (µm) |", "|---|---|---|---|---|---|---|---|")
         fig, axes = plt.subplots(1, 2, figsize=(12, 3.8))
         level_curve = None  # the level is the same in every run: drawn once
-        for colour, (k, step) in enumerate(K_SERIES):
-            for n, r in enumerate(self.step(step)):
+        for colour, step in enumerate(FRONT_STEPS):
+            labelled = False
+            for r in runs(self.data / step, every_status=True):
                 ts = r["_dir"] / "timeseries.csv"
-                if not ts.is_file():
+                continued = r["_dir"].with_name(r["_dir"].name + "_overlap1.5")
+                if not ts.is_file() or continued.is_dir():  # a stopped run counts by its continuation
                     continue
+                scaling = tomllib.loads((r["_dir"] / "config.toml").read_text())["scaling"]
+                k, cap = scaling["time_factor"], scaling["capillary_factor"]
                 rows = list(csv.DictReader(ts.open()))
                 t = [float(x["process_time_s"]) for x in rows]
                 level = [float(x["liquid_level_um"]) for x in rows]
@@ -238,11 +248,14 @@ class Report:
                 leave = next((i for i in range(len(t)) if t[i] > FRONT_AFTER_S and top[i] - level[i] > FRONT_GAP_UM), None)
                 cells = (f"{t[leave]:.1f} | {level[leave]:.1f} | {top[leave]:.1f}" if leave is not None
                          else "never | – | –")
-                self.say(f"| {k:g} | {r['_dir'].name} | {cells} | {top[-1]:.2f} | {r['final_thickness_um']:.2f} |")
-                label = f"k = {k:g}" if n == 0 else None
+                end = (f"{top[-1]:.2f} | {r['final_thickness_um']:.2f}" if r.get("status") == "completed"
+                       else f"stopped at {t[-1]:.1f} s ({r.get('status')}) | –")
+                self.say(f"| {k:g} | {cap:g} | {r['_dir'].name} | {cells} | {end} |")
+                label = None if labelled else f"k = {k:g}, capillary {cap:g}"
+                labelled = True
                 axes[0].plot(t, [a - b for a, b in zip(top, level)], color=f"C{colour}", lw=1, label=label)
                 axes[1].plot(t, top, color=f"C{colour}", lw=1, label=label)
-                level_curve = (t, level)
+                level_curve = (t, level) if level_curve is None or t[-1] > level_curve[0][-1] else level_curve
         self.say("")
         if level_curve is None:
             plt.close(fig)
@@ -254,8 +267,8 @@ class Report:
         axes[1].set_xlabel("process time (s)"), axes[1].set_ylabel("p99 top (µm)")
         axes[1].set_xlim(40, None), axes[1].set_ylim(60, 110)
         for ax in axes:
-            ax.legend(fontsize=8)
-        fig.suptitle("Time-scaling factor k: the film stops following the level earlier at larger k")
+            ax.legend(fontsize=7)
+        fig.suptitle("The film stops following the level earlier at larger k and at a smaller capillary factor")
         fig.tight_layout()
         fig.savefig(self.figures / "validation_k_front.png", dpi=120)
         plt.close(fig)
