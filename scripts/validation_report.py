@@ -29,8 +29,10 @@ PAPER_POROSITY, PAPER_POROSITY_SD = 0.44, 0.01
 FRONT_GAP_UM, FRONT_AFTER_S = 2.0, 20.0
 # The time-scaling series at 20.1 mg/cm2, 40 um box: (k, step); box40 is the run at the paper's k.
 K_SERIES = [(3e6, "k3e6"), (1e7, "box40"), (3e7, "k3e7")]
-# Where k acts: the k series and the runs that change the capillary factor, alone or with k.
-FRONT_STEPS = [step for _, step in K_SERIES] + ["s_cap_lo", "s_cap_hi", "k3e6cap", "k3e7cap"]
+# The same with the capillary factor scaled like k (9e3 k / 1e7).
+K_CAP_SERIES = [(3e6, "k3e6cap"), (1e7, "box40"), (3e7, "k3e7cap")]
+# Where k acts: every run that changes k or the capillary factor, alone or together.
+FRONT_STEPS = list(dict.fromkeys([s for _, s in K_SERIES] + ["s_cap_lo", "s_cap_hi"] + [s for _, s in K_CAP_SERIES]))
 QUANTITIES = [("final_thickness_um", "thickness (µm)", 2), ("density_g_cm3", "density (g/cm³)", 4),
               ("porosity", "porosity", 4), ("cb_binder_porosity_eq2", "Eq. 2 porosity", 4),
               ("psd_peak_um", "local-thickness peak (µm)", 2)]
@@ -354,7 +356,7 @@ class Report:
         self.series("Time-scaling factor k (20.1 mg/cm², 40 × 40 µm, Hamaker factor = k, capillary factor 9e3)",
                     K_SERIES, "k", "validation_k.png", log=True)
         self.series("Time-scaling factor k with the capillary factor scaled too (9e3 k / 1e7; 40 × 40 µm)",
-                    [(3e6, "k3e6cap"), (1e7, "box40"), (3e7, "k3e7cap")], "k", "validation_k_cap.png", log=True)
+                    K_CAP_SERIES, "k", "validation_k_cap.png", log=True)
         self.k_front()
         self.time_step()
         self.seeds()
