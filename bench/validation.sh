@@ -26,12 +26,15 @@
 #
 # usage: bench/validation.sh STEP...     (then scripts/validation_report.py writes the tables/plots
 #        into docs/data/validation/report.md and docs/figures/validation_*.png)
-# environment: THREADS (1) threads per run, OUT (results), DRYDEM (build/drydem; a frozen copy
-#   keeps a long queue on one binary while the tree is rebuilt), CAL_EVALUATIONS (the example's
-#   14): the calibration's budget (a resumed calibration may grow or stop it)
+# environment: THREADS (1) threads per run, JOBS (1) runs at a time, SEEDS (the step's own count)
+#   seeds of a study step, OUT (results), DRYDEM (build/drydem; a frozen copy keeps a long queue on
+#   one binary while the tree is rebuilt), CAL_EVALUATIONS (the example's 14): the calibration's
+#   budget (a resumed calibration may grow or stop it)
 # Every finished study's small files (study.json/csv; per run config, summary, analysis files, a
 # thinned time series) are copied to docs/data/validation/STEP, so the report is rebuilt from a
-# clean clone; the runs themselves take days on one 2-core machine (docs/validation.md).
+# clean clone; the runs themselves take days on one 2-core machine (docs/validation.md). A study
+# that has no folder under OUT yet starts from its archived completed runs (a fresh machine goes on
+# where the last one stopped, seed by seed): SEEDS=1 now and the full count later adds the rest.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 drydem=${DRYDEM:-$here/build/drydem}
@@ -42,7 +45,9 @@ cal=$out/calibrate_20.1
 mkdir -p "$out" "$archive"
 
 calibrated_sets() {  # --set arguments with the calibration's best parameters
-  /usr/bin/python3 - "$cal/result.json" <<'PY'
+  local result=$cal/result.json
+  [[ -f $result ]] || result=$archive/cal20/result.json  # a fresh machine: the archived calibration
+  /usr/bin/python3 - "$result" <<'PY'
 import json, sys
 best = json.load(open(sys.argv[1]))["best"]
 print(" ".join(f"--set {k}={v['value']!r}" for k, v in best.items()))
@@ -52,19 +57,40 @@ PY
 study() {  # $1 step, $2 example config, rest: drydem study arguments
   local step=$1 config=$2 dir=$out/validation_$1
   shift 2
-  if [[ ! -f $cal/result.json ]]; then
+  local args=("$@") i
+  for i in "${!args[@]}"; do  # SEEDS overrides the step's --seeds
+    if [[ ${args[i]} == --seeds && -n ${SEEDS:-} ]]; then args[i+1]=$SEEDS; fi
+  done
+  set -- "${args[@]}"
+  if [[ ! -f $cal/result.json && ! -f $archive/cal20/result.json ]]; then
     echo "== $step needs the calibration (step cal20) to have finished: no $cal/result.json" >&2
     return 0
   fi
   local sets
   sets=$(calibrated_sets)
+  restore_archived_runs "$step" completed
   local resume=()
-  if [[ -f $dir/config.toml ]]; then resume=(--resume); fi
+  if [[ -f $dir/config.toml || -d $dir/runs ]]; then resume=(--resume); fi
   # shellcheck disable=SC2086
-  "$drydem" study "$here/examples/$config" $sets "$@" --jobs 1 --threads "$threads" \
+  "$drydem" study "$here/examples/$config" $sets "$@" --jobs "${JOBS:-1}" --threads "$threads" \
     --quiet --no-plots "${resume[@]}" -o "$dir" > "$out/validation_$step.log" 2>&1 ||
     echo "== $step: drydem study exited $? (see $out/validation_$step.log)" >&2
   keep_small_files "$dir" "$archive/$step"
+}
+
+restore_archived_runs() {  # $1 step, $2 'completed' or 'all': archived runs, where OUT has no study yet
+  # `drydem study --resume` reads a completed run from its summary.json (and analysis/), so the
+  # archived small files stand in for the run; the others run from the start. The overlap reruns
+  # need the failed runs too (their config.toml and the error in summary.json).
+  local dir=$out/validation_$1 run
+  [[ -d $dir || ! -d $archive/$1 ]] && return 0
+  for run in "$archive/$1"/*/; do
+    [[ -f $run/summary.json ]] || continue
+    if [[ $2 == completed ]] && ! grep -q '"status": "completed"' "$run/summary.json"; then continue; fi
+    mkdir -p "$dir/runs"
+    cp -r "${run%/}" "$dir/runs/"
+    echo "== $1: $(basename "$run") restored from $archive/$1" >&2
+  done
 }
 
 keep_small_files() {  # $1 study folder, $2 archive folder
@@ -105,6 +131,7 @@ overlap_reruns() {  # $1 step: its runs stopped by the overlap limit, again with
   # result is the one the study would have given with the higher limit; the report counts the
   # completed one, and docs/validation.md names every such run.
   local step=$1 dir=$out/validation_$1
+  restore_archived_runs "$step" all
   for run in "$dir"/runs/*/; do
     run=${run%/}
     [[ $run == *_overlap1.5 ]] && continue
