@@ -8,7 +8,8 @@
 # usage: bench/integrator_comparison.sh [RUN...]
 #   RUN  names from the matrix below (default: all); runs that already completed are skipped, so
 #        the script resumes (a run stopped midway continues from its checkpoint), and two
-#        instances with disjoint RUN lists use both cores.
+#        instances with disjoint RUN lists use both cores. A run archived as completed (below) and
+#        absent from OUT (a fresh machine) is skipped too.
 # environment: THREADS (1), OUT (results/integrator_comparison), DRYDEM (build/drydem; a copy
 #   keeps the runs on one binary while the tree is rebuilt)
 # Each completed run's small files (config, summary, analysis JSON, profiles, the thickness
@@ -46,7 +47,10 @@ for entry in "${matrix[@]}"; do
   IFS=: read -r name integ seed cap <<< "$entry"
   if ((${#wanted[@]})) && [[ ! " ${wanted[*]} " =~ " $name " ]]; then continue; fi
   dir=$out/$name
-  if completed "$dir"; then
+  if [[ ! -d $dir ]] && completed "$archive/$name"; then  # a fresh machine: archived already
+    echo "== $name: completed (archived), skipped" >&2
+    continue
+  elif completed "$dir"; then
     echo "== $name: completed, skipped" >&2
   else
     echo "== $name: $integ, seed $seed, cap $cap s, $threads thread(s) -> $dir ($(date -u +%H:%M))" >&2
