@@ -23,6 +23,9 @@
 #              one-at-a-time sensitivities at 20.1 in the 40 um box, 2 seeds each (against box40)
 #   overlap:STEP
 #              STEP's runs stopped by the overlap limit, again with numerics.overlap_limit = 1.5
+#   archive:STEP
+#              the runs STEP has finished so far into the archive (while it runs, or before a
+#              session ends: the next machine goes on from them)
 #
 # usage: bench/validation.sh STEP...     (then scripts/validation_report.py writes the tables/plots
 #        into docs/data/validation/report.md and docs/figures/validation_*.png)
@@ -175,6 +178,7 @@ for step in "$@"; do
     s_cap_lo) study s_cap_lo paper_20.1.toml --seeds 2 "${box40[@]}" --set scaling.capillary_factor=4.5e3 ;;
     s_cap_hi) study s_cap_hi paper_20.1.toml --seeds 2 "${box40[@]}" --set scaling.capillary_factor=1.8e4 ;;
     overlap:*) overlap_reruns "${step#overlap:}" ;;
+    archive:*) keep_small_files "$out/validation_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac
 done
