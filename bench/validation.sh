@@ -47,10 +47,12 @@ archive=$here/docs/data/validation
 cal=$out/calibrate_20.1
 mkdir -p "$out" "$archive"
 
+cal_result() {  # the calibration's result.json: this machine's, else (a fresh machine) the archived one
+  if [[ -f $cal/result.json ]]; then echo "$cal/result.json"; else echo "$archive/cal20/result.json"; fi
+}
+
 calibrated_sets() {  # --set arguments with the calibration's best parameters
-  local result=$cal/result.json
-  [[ -f $result ]] || result=$archive/cal20/result.json  # a fresh machine: the archived calibration
-  /usr/bin/python3 - "$result" <<'PY'
+  /usr/bin/python3 - "$(cal_result)" <<'PY'
 import json, sys
 best = json.load(open(sys.argv[1]))["best"]
 print(" ".join(f"--set {k}={v['value']!r}" for k, v in best.items()))
@@ -65,8 +67,8 @@ study() {  # $1 step, $2 example config, rest: drydem study arguments
     if [[ ${args[i]} == --seeds && -n ${SEEDS:-} ]]; then args[i+1]=$SEEDS; fi
   done
   set -- "${args[@]}"
-  if [[ ! -f $cal/result.json && ! -f $archive/cal20/result.json ]]; then
-    echo "== $step needs the calibration (step cal20) to have finished: no $cal/result.json" >&2
+  if [[ ! -f $(cal_result) ]]; then
+    echo "== $step needs the calibration (step cal20) to have finished: no $(cal_result)" >&2
     return 0
   fi
   local sets
