@@ -26,7 +26,7 @@ Riding ride(double r, double rho, double u0, double dt, double duration) {
     ff.substrate_on = false;                              // free particle, far from any wall
     ff.gravity = {9.81e6, 1030};                          // g k / b, NMP buoyancy (M-5, M-7)
     ff.drag = {0.1801, true};                             // η / b with rotation (M-5, C-18)
-    ff.capillary = {0.041, 40.0 * std::numbers::pi / 180.0, 9e3}; // σ, θ, s_cap (M-6)
+    ff.capillary = {0.041 * 9e3, 40.0 * std::numbers::pi / 180.0}; // σ s_cap, θ (M-6)
     const double z0 = 60e-6, level0 = z0 + u0 * r;
     ParticleStore p;
     p.add(1, 0, r, rho, {20e-6, 20e-6, z0});

@@ -11,7 +11,7 @@ using namespace drydem;
 constexpr double kR = 0.75e-6; // CB radius
 constexpr double kRNcm = 11.35e-6 / 2;
 constexpr double kLevel = 0.0; // z_L (the law depends on z_L - z only; 0 keeps u = ±1 exact)
-const CapillaryParams kCap{0.041, 40.0 * std::numbers::pi / 180.0, 9e3};
+const CapillaryParams kCap{0.041 * 9e3, 40.0 * std::numbers::pi / 180.0};
 
 /// Force on a particle of radius r at u = h_s / r = (z_L - z) / r.
 double force_at(double u, double r = kR) {

@@ -275,3 +275,20 @@ TEST(Config, WrongTypeNamesKey) {
     EXPECT_NE(msg.find("integer"), std::string::npos) << msg;
     EXPECT_NE(input_error("[lubrication]\nenabled = 1\n").find("true or false"), std::string::npos);
 }
+
+// force_ratio derives the capillary and Hamaker factors from k/b (docs/model.md M-7): a value of the
+// paper scheme's own is refused, naming the key and what is allowed, never ignored.
+TEST(Config, ForceRatioRefusesItsDerivedFactors) {
+    for (const char* key : {"scaling.capillary_factor", "scaling.hamaker_factor"}) {
+        const std::string msg =
+            input_error("", {"scaling.scheme=\"force_ratio\"", std::string(key) + "=9000"});
+        EXPECT_NE(msg.find(key), std::string::npos) << msg;
+        EXPECT_NE(msg.find("force_ratio"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("allowed: 0"), std::string::npos) << msg;
+    }
+    const Config c = load_config("", "t", {"scaling.scheme=\"force_ratio\"", "scaling.stiffness_factor=20"});
+    EXPECT_EQ(c.scaling_scheme, "force_ratio");
+    EXPECT_EQ(c.stiffness_factor, 20.0);
+    EXPECT_NE(input_error("", {"scaling.scheme=\"fast\""}).find("paper"), std::string::npos);
+    EXPECT_NE(input_error("", {"scaling.stiffness_factor=0"}).find("scaling.stiffness_factor"), std::string::npos);
+}

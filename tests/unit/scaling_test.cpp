@@ -95,12 +95,12 @@ TEST(Scaling, DryingForceFieldParticleForces) {
     EXPECT_TRUE(ff.drag.rotational);                       // C-18
     expect_rel(ff.gravity.gravity, 9.81e6);
     expect_rel(ff.gravity.fluid_density, 1030);
-    // M-6: physical σ times s_cap; stiffness 2πσ s_cap = 2318 N/m.
-    expect_rel(ff.capillary.surface_tension, 0.041);
-    expect_rel(ff.capillary.scale, 9e3);
+    // M-6: the law receives σ s_cap as simulated; stiffness 2πσ s_cap = 2318 N/m.
+    expect_rel(ff.capillary.surface_tension, 369.0);
     expect_rel(ff.capillary.contact_angle, 40.0 * std::numbers::pi / 180.0);
-    expect_rel(ff.capillary.surface_tension * ff.capillary.scale, 369.0);
     EXPECT_NEAR(capillary_stiffness(ff.capillary), 2318.0, 0.5);
+    // Largest push on a CB: 2πσ s_cap r cos²(θ/2) = 2318.5 × 0.75e-6 × 0.88302 N.
+    expect_rel(capillary_max_force(0.75e-6, ff.capillary), 2318.495 * 0.75e-6 * 0.8830222, 1e-5);
 
     Config no_lub = c;
     no_lub.lubrication = false;
@@ -108,6 +108,49 @@ TEST(Scaling, DryingForceFieldParticleForces) {
     const ForceField off = make_drying_force_field(no_lub, r, scale_parameters(no_lub));
     EXPECT_EQ(law<LubricationLaw>(off.pair_params(5, 5)).viscosity, 0.0);
     EXPECT_EQ(off.substrate_lubrication.viscosity, 0.0);
+}
+
+// The force_ratio scheme (M-7): every conservative force × k/b, every viscosity / b, moduli × e.
+TEST(Scaling, ForceRatioScheme) {
+    Config c;
+    c.scaling_scheme = "force_ratio";
+    c.time_factor = 1e6;
+    c.viscosity_reduction = 100;
+    c.stiffness_factor = 20;
+    const ScaledParameters s = scale_parameters(c);
+    expect_rel(s.capillary_factor, 1e4);
+    expect_rel(s.hamaker_factor, 1e4);
+    expect_rel(s.gravity_scaled, 9.81e4);
+    expect_rel(s.drag_viscosity_scaled, 0.01801);
+    expect_rel(s.lubrication_viscosity, 0.01801);
+    expect_rel(s.hamaker_cb_cb[1], 4.64e-16);
+    expect_rel(s.surface_tension_scaled, 410.0);
+    expect_rel(s.youngs_cb[1], 142e9 * 20);
+    expect_rel(s.youngs_substrate[1], 70e9 * 20);
+    expect_rel(s.level_speeds_scaled[0], 0.67);
+    // Every force of the field is the one the scaling lists: the laws apply no factor of their own.
+    const FilmRecipe r = make_recipe(c);
+    const ForceField ff = make_drying_force_field(c, r, s);
+    const int cb = r.cb_species();
+    expect_rel(law<VanDerWaalsLaw>(ff.pair_params(cb, cb)).hamaker, 4.64e-16);
+    expect_rel(law<LubricationLaw>(ff.pair_params(cb, 0)).viscosity, 0.01801);
+    expect_rel(ff.substrate_lubrication.viscosity, 0.01801);
+    expect_rel(ff.capillary.surface_tension, 410.0);
+    expect_rel(law<HertzMindlinLaw>(ff.pair_params(cb, cb)).e_star, 142e9 * 20 / (2 * (1 - 0.09)));
+}
+
+// The paper scheme's zeros mean its own factors: capillary 9e3, Hamaker = k (Sec. 4.1).
+TEST(Scaling, PaperSchemeDefaultFactors) {
+    Config c;
+    c.time_factor = 3e6;
+    const ScaledParameters s = scale_parameters(c);
+    expect_rel(s.capillary_factor, 9e3);
+    expect_rel(s.hamaker_factor, 3e6);
+    c.hamaker_factor = 1e7;
+    c.capillary_factor = 4.5e3;
+    expect_rel(scale_parameters(c).hamaker_factor, 1e7);
+    expect_rel(scale_parameters(c).capillary_factor, 4.5e3);
+    expect_rel(scale_parameters(c).stiffness_factor, 1.0);
 }
 
 } // namespace

@@ -217,6 +217,7 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
     r.bulk = bulk_properties(s, r.profiles.solid(), o.profile_dz);
     r.coordination = coordination(s, o.contact_gap);
+    r.overlaps = overlap_census(s);
     r.base_area = s.box.area();
     r.surfaces = ncm_surfaces(s, o.surfaces);
     // Transport (tortuosity, conductivities) on its own coarser voxelizations, then the binder

@@ -7,6 +7,7 @@
 #include "drydem/analysis/bulk.hpp"
 #include "drydem/analysis/chords.hpp"
 #include "drydem/analysis/coordination.hpp"
+#include "drydem/analysis/overlap_census.hpp"
 #include "drydem/analysis/profiles.hpp"
 #include "drydem/analysis/surfaces.hpp"
 #include "drydem/analysis/transport.hpp"
@@ -66,6 +67,7 @@ struct AnalysisResult {
     Bulk bulk;
     Profiles profiles;
     Coordination coordination;
+    OverlapCensus overlaps;            ///< how far the soft contacts interpenetrate
     bool voxelized = false;
     int nx = 0, ny = 0, nz = 0;
     double voxel = 0.0;

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/analysis/coordination.hpp"
-#include <algorithm>
-#include <cmath>
+#include "drydem/analysis/pair_search.hpp"
 
 namespace drydem::analysis {
 
@@ -10,70 +9,18 @@ Coordination coordination(const Structure& s, double gap) {
     c.gap = gap;
     const std::size_t n = s.size();
     c.per_particle.assign(n, 0);
-    double r_max = 0.0, z_min = INFINITY, z_max = -INFINITY;
     for (std::size_t i = 0; i < n; ++i) {
-        r_max = std::max(r_max, s.radius[i]);
-        z_min = std::min(z_min, s.position[i].z);
-        z_max = std::max(z_max, s.position[i].z);
         (s.phase[i] == Phase::ncm ? c.n_ncm : c.n_cb) += 1;
         if (s.position[i].z - s.radius[i] <= gap) (s.phase[i] == Phase::ncm ? c.ncm_substrate : c.cb_substrate) += 1;
     }
-    if (n < 2) return c;
-    // Cells at least as wide as the longest contact distance; at least 3 per periodic side so a
-    // pair is seen through exactly one neighbouring cell.
-    const double reach = 2.0 * r_max + std::max(0.0, gap);
-    const int nx = std::max(1, int(s.box.lx / reach)), ny = std::max(1, int(s.box.ly / reach));
-    const int nz = std::max(1, int((z_max - z_min) / reach) + 1);
-    const double cx = s.box.lx / nx, cy = s.box.ly / ny;
-    auto cell_of = [&](std::size_t i) {
-        const int ix = std::min(nx - 1, int(s.position[i].x / cx));
-        const int iy = std::min(ny - 1, int(s.position[i].y / cy));
-        const int iz = std::min(nz - 1, int((s.position[i].z - z_min) / reach));
-        return (iz * ny + iy) * nx + ix;
-    };
-    const int ncell = nx * ny * nz;
-    std::vector<std::uint32_t> start(std::size_t(ncell) + 1, 0), members(n);
-    for (std::size_t i = 0; i < n; ++i) ++start[std::size_t(cell_of(i)) + 1];
-    for (int k = 0; k < ncell; ++k) start[std::size_t(k) + 1] += start[std::size_t(k)];
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) members[fill[std::size_t(cell_of(i))]++] = std::uint32_t(i);
-
-    // Distinct neighbouring cell offsets per axis (fewer than 3 cells: each cell once).
-    auto offsets = [](int cells) {
-        std::vector<int> o;
-        for (int d = -1; d <= 1; ++d)
-            if (std::find_if(o.begin(), o.end(), [&](int e) { return ((e - d) % cells + cells) % cells == 0; }) == o.end())
-                o.push_back(d);
-        return o;
-    };
-    const auto ox = offsets(nx), oy = offsets(ny);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Vec3& a = s.position[i];
-        const int ix = std::min(nx - 1, int(a.x / cx)), iy = std::min(ny - 1, int(a.y / cy));
-        const int iz = std::min(nz - 1, int((a.z - z_min) / reach));
-        for (int dz = -1; dz <= 1; ++dz) {
-            const int jz = iz + dz;
-            if (jz < 0 || jz >= nz) continue;
-            for (int dy : oy)
-                for (int dx : ox) {
-                    const int jx = (ix + dx + nx) % nx, jy = (iy + dy + ny) % ny;
-                    const int cell = (jz * ny + jy) * nx + jx;
-                    for (std::uint32_t m = start[std::size_t(cell)]; m < start[std::size_t(cell) + 1]; ++m) {
-                        const std::size_t j = members[m];
-                        if (j <= i) continue;
-                        const Vec3 d = s.box.minimum_image(a, s.position[j]);
-                        const double limit = s.radius[i] + s.radius[j] + gap;
-                        if (d.x * d.x + d.y * d.y + d.z * d.z > limit * limit) continue;
-                        ++c.per_particle[i];
-                        ++c.per_particle[j];
-                        const bool ni = s.phase[i] == Phase::ncm, nj = s.phase[j] == Phase::ncm;
-                        if (ni && nj) ++c.ncm_ncm;
-                        else if (ni || nj) ++c.ncm_cb;
-                        else ++c.cb_cb;
-                    }
-                }
-        }
-    }
+    for_each_close_pair(s, gap, [&](std::size_t i, std::size_t j, const Vec3&) {
+        ++c.per_particle[i];
+        ++c.per_particle[j];
+        const bool ni = s.phase[i] == Phase::ncm, nj = s.phase[j] == Phase::ncm;
+        if (ni && nj) ++c.ncm_ncm;
+        else if (ni || nj) ++c.ncm_cb;
+        else ++c.cb_cb;
+    });
     return c;
 }
 

@@ -4,6 +4,7 @@
 #include "drydem/app/commands.hpp"
 #include "drydem/core/sphere.hpp"
 #include "drydem/analysis/analyze.hpp"
+#include "drydem/drying/dimensionless_groups.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/drying/stability_clusters.hpp"
 #include "drydem/drying/derived_checks.hpp"
@@ -35,6 +36,42 @@ void print_guard_clusters(const Config& c, const FilmRecipe& r) {
     }
 }
 
+/// The dimensionless groups per dryer zone, physical and as simulated, with their ratio: what the
+/// scheme distorts (docs/model.md "Dimensionless groups").
+void print_groups(const DimensionlessGroups& d) {
+    fmt::print("Dimensionless groups (docs/model.md \"Dimensionless groups\"; film H = {:.4g} um, "
+               "push length l* = {:.4g} um)\n", d.film_thickness * 1e6, d.push_length * 1e6);
+    using G = double Groups::*;
+    const std::pair<const char*, G> rows[] = {
+        {"capillary number, drag", &Groups::capillary_drag},
+        {"capillary number, lubrication CB-CB", &Groups::capillary_lubrication},
+        {"push number Ca H / l*", &Groups::push},
+        {"Stokes number, largest NCM", &Groups::stokes_ncm},
+        {"Stokes number, CB", &Groups::stokes_cb},
+        {"inertial number", &Groups::inertial},
+        {"van der Waals / capillary, CB-CB", &Groups::vdw_capillary_cb_cb},
+        {"van der Waals / capillary, NCM-CB", &Groups::vdw_capillary_ncm_cb},
+        {"Bond number, largest NCM", &Groups::bond_ncm},
+        {"Hertz overlap / r, CB-CB (vdW)", &Groups::overlap_cb_cb},
+        {"Hertz overlap / r, NCM on CB (cap.)", &Groups::overlap_ncm_cb},
+        {"Hertz overlap / r, NCM on substrate", &Groups::overlap_ncm_substrate},
+    };
+    for (std::size_t z = 0; z < d.physical.size(); ++z) {
+        fmt::print("  zone {} (level {:.4g} um/s)            {:>11} {:>11} {:>10}\n", z + 1,
+                   d.level_speeds_physical[z] * 1e6, "physical", "simulated", "ratio");
+        for (const auto& [name, member] : rows) {
+            const double p = d.physical[z].*member, q = d.simulated[z].*member;
+            fmt::print("    {:<37} {:>11.3g} {:>11.3g} {:>10.3g}\n", name, p, q, p > 0.0 ? q / p : 0.0);
+        }
+    }
+    const Groups& worst = d.simulated.back();
+    if (worst.push > push_number_warning)
+        fmt::print("  warning: the simulated push number {:.3g} passes {:g}: the level cannot carry the film, "
+                   "which jams at a point set by the time scaling (docs/validation.md)\n", worst.push,
+                   push_number_warning);
+    fmt::print("\n");
+}
+
 } // namespace
 
 void print_check(const Config& c) {
@@ -59,8 +96,9 @@ void print_check(const Config& c) {
                    sc.count_exact, sc.density * 1e-3);
     fmt::print("  particles                 {}\n\n", r.particle_count());
 
-    fmt::print("Scaling (M-7): k = {:g}, b = {:g}, capillary x {:g}, Hamaker x {:g}\n", s.time_factor,
-               s.viscosity_reduction, s.capillary_factor, s.hamaker_factor);
+    fmt::print("Scaling (M-7): scheme \"{}\", k = {:g}, b = {:g}, capillary x {:g}, Hamaker x {:g}, "
+               "Young's moduli x {:g}\n", s.scheme, s.time_factor, s.viscosity_reduction, s.capillary_factor,
+               s.hamaker_factor, s.stiffness_factor);
     fmt::print("  gravity                   {:g} -> {:g} m/s2\n", s.gravity_physical, s.gravity_scaled);
     fmt::print("  Stokes viscosity          {:g} -> {:g} Pa s\n", s.drag_viscosity_physical, s.drag_viscosity_scaled);
     fmt::print("  lubrication viscosity     {:g} Pa s\n", s.lubrication_viscosity);
@@ -78,7 +116,7 @@ void print_check(const Config& c) {
     const SizeClass& cb = *std::min_element(r.species.begin(), r.species.end(),
                                             [](const SizeClass& a, const SizeClass& b) { return a.diameter < b.diameter; });
     const double rc = 0.5 * cb.diameter, m = cb.density * sphere_volume(rc);
-    const double e_cb = cb.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
+    const double e_cb = cb.is_cb ? s.youngs_cb[1] : s.youngs_ncm[1];
     const HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair_params(r.cb_species(), r.cb_species()));
     const double tr = rayleigh_time(rc, cb.density, e_cb, c.poisson_ratio);
     const double cap = c.time_step_cap();
@@ -95,6 +133,7 @@ void print_check(const Config& c) {
                capillary_stiffness(ff.capillary) > 0 ? 2 * pi * std::sqrt(m / capillary_stiffness(ff.capillary)) : INFINITY);
     print_guard_clusters(c, r);
     fmt::print("\n");
+    print_groups(dimensionless_groups(c));
 
     // Cost estimate (M-8.3), from the derived-quantity checks' own estimate.
     const DerivedQuantities d = derived_quantities(c);

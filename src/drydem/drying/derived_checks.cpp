@@ -158,10 +158,17 @@ void check_derived_quantities(const Config& c, const std::vector<std::string>& b
         refuse(c, fmt::format("the scaled gravity is {:g} m/s2; it must be finite", s.gravity_scaled),
                {"scaling.gravity", "scaling.time_factor", "scaling.viscosity_reduction"}, bare);
     if (!std::isfinite(s.hamaker_ncm_ncm[1]) || !std::isfinite(s.hamaker_ncm_cb[1]) || !std::isfinite(s.hamaker_cb_cb[1]))
-        refuse(c, "a scaled Hamaker constant is not finite", {"scaling.hamaker_factor"}, bare);
+        refuse(c, "a scaled Hamaker constant is not finite",
+               {"scaling.hamaker_factor", "scaling.scheme", "scaling.time_factor", "scaling.viscosity_reduction"}, bare);
     if (!std::isfinite(s.surface_tension_scaled))
         refuse(c, fmt::format("the scaled surface tension is {:g} N/m; it must be finite", s.surface_tension_scaled),
-               {"materials.surface_tension", "scaling.capillary_factor"}, bare);
+               {"materials.surface_tension", "scaling.capillary_factor", "scaling.scheme", "scaling.time_factor",
+                "scaling.viscosity_reduction"}, bare);
+    for (double e : {s.youngs_ncm[1], s.youngs_cb[1], s.youngs_substrate[1]})
+        if (!positive_finite(e))
+            refuse(c, fmt::format("a scaled Young's modulus is {:g} Pa; it must be finite and positive", e),
+                   {"scaling.stiffness_factor", "materials.ncm_youngs_modulus", "materials.cb_youngs_modulus",
+                    "materials.substrate_youngs_modulus"}, bare);
     check_minimum_image(c, r, s);
 
     // Steps (M-8.3) and the end criterion's window.

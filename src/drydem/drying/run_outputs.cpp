@@ -4,6 +4,7 @@
 // outputs of the end (final particles, analysis, summary, plots) are in run_summary.cpp.
 #include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/drying/dimensionless_groups.hpp"
 #include "drydem/drying/eta.hpp"
 #include "drydem/drying/film_measures.hpp"
 #include "drydem/drying/run_checkpoint.hpp"
@@ -94,7 +95,8 @@ public:
                         std::vector<std::string>{"process_time_s", "sim_time_s", "step", "liquid_level_um",
                                                  "film_thickness_um", "film_top_p99_um", "kinetic_energy_J",
                                                  "contacts", "wall_contacts", "max_overlap_rel",
-                                                 "particles_at_level", "dt_lambda", "time_step_s", "zone"},
+                                                 "particles_at_level", "dt_lambda", "time_step_s", "zone",
+                                                 "push_number", "inertial_number", "overlap_p99_rel"},
                         resumed);
         if (resumed) return;
         row(s);
@@ -110,12 +112,20 @@ public:
         if (!f.loading()) bytes_ = fs::file_size(file_); // every row is flushed
         f("series.next", trigger_.next);
         f("series.bytes", bytes_);
+        f("series.warned_overlap_p99", warned_overlap_);
+        f("series.warned_push_number", warned_push_);
     }
 
 private:
     void row(const StepView& s) {
         const Simulation& sim = s.sim;
         const auto& st = sim.stats();
+        const Film& film = ctx_.film;
+        const int zone = film.schedule.zone(sim.time());
+        const LevelLoad load = level_load(sim.particles(), sim.forces(), sim.liquid_level(),
+                                          film.schedule.speeds[std::size_t(zone)], film.box.area());
+        const double p99 =
+            analysis::overlap_census(as_structure(sim.particles(), sim.box(), film.recipe.cb_species())).all.p99;
         const double values[] = {ctx_.film.scaled.process_time(sim.time()),
                                  sim.time(),
                                  double(sim.step_count()),
@@ -129,8 +139,27 @@ private:
                                  double(particles_cutting_level(sim.particles(), sim.liquid_level())),
                                  s.guard.indicator(),
                                  sim.settings().dt,
-                                 double(ctx_.film.schedule.zone(sim.time()) + 1)};
+                                 double(zone + 1),
+                                 load.push_number,
+                                 load.inertial_number,
+                                 p99};
         writer_->row(values);
+        warn_once(warned_overlap_, p99 > overlap_p99_warning,
+                  "the 99th-percentile overlap is {:.1f} % of the smaller radius at process time {:.3f} s "
+                  "(DEM practice ~1 %, warning above {:.0f} %): the contacts are soft for the forces that press "
+                  "them; raise scaling.stiffness_factor or lower the force scaling (docs/validation.md)",
+                  p99 * 100, values[0], overlap_p99_warning * 100);
+        warn_once(warned_push_, load.push_number > push_number_warning,
+                  "the push number is {:.3g} at process time {:.3f} s (warning above {:g}): the level cannot carry "
+                  "the film, which then jams where the time scaling puts it; scaling.scheme = \"force_ratio\" "
+                  "keeps the process's value (docs/validation.md)",
+                  load.push_number, values[0], push_number_warning);
+    }
+    template <class... Args>
+    void warn_once(bool& warned, bool condition, fmt::format_string<Args...> text, Args&&... args) {
+        if (warned || !condition) return;
+        warned = true;
+        ctx_.log.warn(text, std::forward<Args>(args)...);
     }
 
     const RunContext& ctx_;
@@ -138,6 +167,7 @@ private:
     Every trigger_;
     std::uint64_t bytes_ = 0;
     std::optional<CsvSeriesWriter> writer_;
+    bool warned_overlap_ = false, warned_push_ = false;
 };
 
 /// Snapshot times: every output.snapshot_every of process time (0 = none between the first and

@@ -2,6 +2,7 @@
 #include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/drying/run_summary.hpp"
 #include "drydem/analysis/analyze.hpp"
+#include "drydem/drying/dimensionless_groups.hpp"
 #include "drydem/drying/film_measures.hpp"
 #include "drydem/git_hash.hpp"
 #include "drydem/output/analysis_writer.hpp"
@@ -111,6 +112,7 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
     const Config& c = ctx.config;
     const Simulation& sim = e.sim;
     s["scaling"] = to_json(ctx.film.scaled);
+    s["dimensionless_groups"] = to_json(dimensionless_groups(c));
     // Which shrinkage rates drove the liquid level: the config's, or the dryer model's (docs/dryer.md).
     std::vector<double> um;
     for (double r : c.shrinkage_rates) um.push_back(r * 1e6);

@@ -4,26 +4,39 @@
 
 namespace drydem {
 
+namespace {
+
+/// The paper's capillary factor when scaling.capillary_factor is 0 (Sec. 4.1).
+constexpr double paper_capillary_factor = 9e3;
+
+} // namespace
+
 ScaledParameters scale_parameters(const Config& c) {
     ScaledParameters s;
     const double k = c.time_factor, b = c.viscosity_reduction;
+    const bool force_ratio = c.scaling_scheme == "force_ratio";
+    s.scheme = c.scaling_scheme;
     s.time_factor = k;
     s.viscosity_reduction = b;
-    s.capillary_factor = c.capillary_factor;
-    s.hamaker_factor = c.hamaker_factor;
+    // force_ratio: every conservative force × k/b, as the viscous ones at velocities × k and η / b.
+    s.capillary_factor = force_ratio ? k / b : c.capillary_factor > 0.0 ? c.capillary_factor : paper_capillary_factor;
+    s.hamaker_factor = force_ratio ? k / b : c.hamaker_factor > 0.0 ? c.hamaker_factor : k;
+    s.stiffness_factor = c.stiffness_factor;
     s.gravity_physical = c.gravity;
     s.gravity_scaled = c.gravity * k / b;              // Eq. 13 keeps v_level / v_settling
     s.drag_viscosity_physical = c.viscosity;
     s.drag_viscosity_scaled = c.viscosity / b;         // Eq. 10 with η/b
-    s.lubrication_viscosity = lubrication_viscosity(c);
-    s.hamaker_cb_cb[0] = c.hamaker_cb_cb;
-    s.hamaker_ncm_cb[0] = c.hamaker_ncm_cb;
-    s.hamaker_ncm_ncm[0] = c.hamaker_ncm_ncm;
-    s.hamaker_cb_cb[1] = scaled_hamaker(c.hamaker_cb_cb, c);
-    s.hamaker_ncm_cb[1] = scaled_hamaker(c.hamaker_ncm_cb, c);
-    s.hamaker_ncm_ncm[1] = scaled_hamaker(c.hamaker_ncm_ncm, c);
+    s.lubrication_viscosity =
+        force_ratio || c.lubrication_uses_reduced_viscosity ? c.viscosity / b : c.viscosity; // C-17
+    const auto scaled = [](double (&v)[2], double physical, double factor) { v[0] = physical; v[1] = physical * factor; };
+    scaled(s.hamaker_cb_cb, c.hamaker_cb_cb, s.hamaker_factor);
+    scaled(s.hamaker_ncm_cb, c.hamaker_ncm_cb, s.hamaker_factor);
+    scaled(s.hamaker_ncm_ncm, c.hamaker_ncm_ncm, s.hamaker_factor);
     s.surface_tension_physical = c.surface_tension;
-    s.surface_tension_scaled = c.surface_tension * c.capillary_factor;
+    s.surface_tension_scaled = c.surface_tension * s.capillary_factor;
+    scaled(s.youngs_ncm, c.ncm_youngs_modulus, s.stiffness_factor);
+    scaled(s.youngs_cb, c.cb_youngs_modulus, s.stiffness_factor);
+    scaled(s.youngs_substrate, c.substrate_youngs_modulus, s.stiffness_factor);
     s.shrinkage_rates_physical = c.shrinkage_rates;
     for (double rate : c.shrinkage_rates) s.level_speeds_scaled.push_back(rate * k);
     s.zone_duration_physical = c.zone_length / c.line_speed;
@@ -31,14 +44,33 @@ ScaledParameters scale_parameters(const Config& c) {
     return s;
 }
 
+Config simulated_config(const Config& c, const ScaledParameters& s) {
+    Config sim = c;
+    sim.hamaker_cb_cb = s.hamaker_cb_cb[1];
+    sim.hamaker_ncm_cb = s.hamaker_ncm_cb[1];
+    sim.hamaker_ncm_ncm = s.hamaker_ncm_ncm[1];
+    sim.surface_tension = s.surface_tension_scaled;
+    sim.ncm_youngs_modulus = s.youngs_ncm[1];
+    sim.cb_youngs_modulus = s.youngs_cb[1];
+    sim.substrate_youngs_modulus = s.youngs_substrate[1];
+    sim.viscosity = s.lubrication_viscosity;
+    // The double layer's strength ε_r ε_0 ψ₀² scales like van der Waals (the balance of the two
+    // surface forces stays the physical one); ε_r carries the factor.
+    sim.double_layer_permittivity = c.double_layer_permittivity * s.hamaker_factor;
+    sim.gravity = s.gravity_scaled;
+    return sim;
+}
+
 nlohmann::json to_json(const ScaledParameters& s) {
     using nlohmann::json;
     auto pair = [](double physical, double scaled) { return json{{"physical", physical}, {"scaled", scaled}}; };
     return json{
+        {"scheme", s.scheme},
         {"time_factor_k", s.time_factor},
         {"viscosity_reduction_b", s.viscosity_reduction},
         {"capillary_factor", s.capillary_factor},
         {"hamaker_factor", s.hamaker_factor},
+        {"stiffness_factor_e", s.stiffness_factor},
         {"gravity_m_s2", pair(s.gravity_physical, s.gravity_scaled)},
         {"stokes_viscosity_Pa_s", pair(s.drag_viscosity_physical, s.drag_viscosity_scaled)},
         {"lubrication_viscosity_Pa_s", s.lubrication_viscosity},
@@ -46,13 +78,17 @@ nlohmann::json to_json(const ScaledParameters& s) {
         {"hamaker_ncm_cb_J", pair(s.hamaker_ncm_cb[0], s.hamaker_ncm_cb[1])},
         {"hamaker_ncm_ncm_J", pair(s.hamaker_ncm_ncm[0], s.hamaker_ncm_ncm[1])},
         {"surface_tension_N_m", pair(s.surface_tension_physical, s.surface_tension_scaled)},
+        {"youngs_modulus_ncm_Pa", pair(s.youngs_ncm[0], s.youngs_ncm[1])},
+        {"youngs_modulus_cb_Pa", pair(s.youngs_cb[0], s.youngs_cb[1])},
+        {"youngs_modulus_substrate_Pa", pair(s.youngs_substrate[0], s.youngs_substrate[1])},
         {"shrinkage_rates_m_s", {{"physical", s.shrinkage_rates_physical}, {"level_speed_scaled", s.level_speeds_scaled}}},
         {"zone_duration_s", pair(s.zone_duration_physical, s.zone_duration_scaled)},
     };
 }
 
-ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
+ForceField make_drying_force_field(const Config& config, const FilmRecipe& recipe,
                                    const ScaledParameters& s) {
+    const Config c = simulated_config(config, s); // the laws see simulated values only
     ForceField ff;
     const int n = int(recipe.species.size());
     ff.species_count = n;
@@ -72,9 +108,8 @@ ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
     ff.drag.rotational = true; // C-18
     ff.gravity.gravity = s.gravity_scaled;
     ff.gravity.fluid_density = c.solvent_density;
-    ff.capillary.surface_tension = c.surface_tension;
+    ff.capillary.surface_tension = s.surface_tension_scaled;
     ff.capillary.contact_angle = c.contact_angle;
-    ff.capillary.scale = c.capillary_factor;
     return ff;
 }
 

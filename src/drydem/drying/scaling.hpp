@@ -1,25 +1,34 @@
 // SPDX-License-Identifier: MIT
-// The paper's time-scaling scheme (Sec. 4.1, model.md M-7) in one place: it maps the physical
-// parameters to the values used in the simulation and records both.
-//   level speed × k, time ÷ k, gravity × k/b, Stokes viscosity ÷ b, Hamaker × hamaker_factor,
-//   capillary force × capillary_factor; lubrication keeps the full viscosity (C-17).
+// Time scaling (docs/model.md M-7) in one place: scale_parameters maps the physical parameters and
+// the scheme to the values the laws receive, and records both; simulated_config hands those values
+// to the laws' from_config, which never see a factor. Two schemes:
+//   paper        level speed × k, time ÷ k, gravity × k/b, Stokes viscosity ÷ b, Hamaker × k_A
+//                (0 = k), capillary force × s_cap (0 = 9e3), lubrication at full viscosity (C-17)
+//   force_ratio  level speed × k, time ÷ k, every viscosity ÷ b, every conservative force
+//                (capillary, van der Waals, double layer, gravity) × f = k/b: the capillary
+//                number and every ratio of forces stay the process's; what is left distorted is
+//                inertia (Stokes number × k b) and the overlap (× (f/e)^(2/3))
+// and in both the Young's moduli × e (scaling.stiffness_factor).
 #pragma once
 #include "drydem/engine/simulation.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <nlohmann/json_fwd.hpp>
+#include <string>
 #include <vector>
 
 namespace drydem {
 
 struct ScaledParameters {
-    double time_factor, viscosity_reduction, capillary_factor, hamaker_factor;
+    std::string scheme;                                      ///< "paper" or "force_ratio"
+    double time_factor, viscosity_reduction, capillary_factor, hamaker_factor, stiffness_factor;
     double gravity_physical, gravity_scaled;                 ///< [m/s^2]
     double drag_viscosity_physical, drag_viscosity_scaled;   ///< [Pa s]
-    double lubrication_viscosity;                            ///< [Pa s]
+    double lubrication_viscosity;                            ///< [Pa s], as simulated
     double hamaker_cb_cb[2], hamaker_ncm_cb[2], hamaker_ncm_ncm[2]; ///< {physical, scaled} [J]
     double surface_tension_physical, surface_tension_scaled; ///< σ and σ·s_cap [N/m]
+    double youngs_ncm[2], youngs_cb[2], youngs_substrate[2]; ///< {physical, scaled} [Pa]
     std::vector<double> shrinkage_rates_physical;            ///< [m/s]
     std::vector<double> level_speeds_scaled;                 ///< [m/s]
     double zone_duration_physical, zone_duration_scaled;     ///< [s]
@@ -27,9 +36,17 @@ struct ScaledParameters {
     /// Simulated time ↔ process (physical) time.
     [[nodiscard]] double process_time(double sim_time) const { return sim_time * time_factor; }
     [[nodiscard]] double sim_time(double process_time) const { return process_time / time_factor; }
+    /// The factor on the Stokes drag's force at a given physical velocity field: k/b (both schemes).
+    [[nodiscard]] double drag_force_factor() const { return time_factor / viscosity_reduction; }
 };
 
+/// Every scaled value of the configuration's scheme (the one place a scaling factor is applied).
 ScaledParameters scale_parameters(const Config& c);
+
+/// The configuration as the laws receive it: every law parameter replaced by its simulated value
+/// (Hamaker constants, surface tension, Young's moduli, the lubrication viscosity in `viscosity`,
+/// the double layer's strength in its permittivity). Only the laws' from_config read it.
+Config simulated_config(const Config& c, const ScaledParameters& s);
 
 /// numerics.integrator as the engine's enum.
 Integrator integrator_of(const Config& c);

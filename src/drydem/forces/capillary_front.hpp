@@ -6,7 +6,8 @@
 //   F = -2πσ s_cap r sin ω sin(ω + θ) ẑ = -2πσ s_cap r [(1 - u²) cos θ - u sqrt(1 - u²) sin θ] ẑ
 // for |h_s| < r, else 0. The force passes through the centre (no torque); it vanishes at u = cos θ
 // (floating equilibrium of a hydrophilic sphere) with spring stiffness 2πσ s_cap, and pulls
-// slightly upward for cos θ < u < 1 (I-8). σ is physical, s_cap = 9e3 is the scaling (M-7).
+// slightly upward for cos θ < u < 1 (I-8). The law receives σ s_cap as simulated (M-7,
+// drying/scaling.cpp: s_cap = 9e3 in the paper's scheme) and applies no factor.
 #pragma once
 #include "drydem/core/vec3.hpp"
 #include <cmath>
@@ -15,14 +16,20 @@
 namespace drydem {
 
 struct CapillaryParams {
-    double surface_tension = 0.0;                           ///< σ [N/m], physical (NMP 0.041)
+    double surface_tension = 0.0;                           ///< σ s_cap [N/m], as simulated; 0 = off
     double contact_angle = 40.0 * std::numbers::pi / 180.0; ///< θ [rad]
-    double scale = 0.0;                                     ///< s_cap (9e3); 0 = off
 };
 
 /// Stiffness of the force about its equilibrium, 2πσ s_cap [N/m] (2318 N/m scaled, M-6).
 inline double capillary_stiffness(const CapillaryParams& p) {
-    return 2.0 * std::numbers::pi * p.surface_tension * p.scale;
+    return 2.0 * std::numbers::pi * p.surface_tension;
+}
+
+/// The largest push the level can give a sphere of radius r, at ω = (π - θ)/2:
+/// 2πσ s_cap r cos²(θ/2) [N] (the maximum of sin ω sin(ω + θ)).
+inline double capillary_max_force(double r, const CapillaryParams& p) {
+    const double c = std::cos(0.5 * p.contact_angle);
+    return capillary_stiffness(p) * r * c * c;
 }
 
 inline Vec3 capillary_front(double z, double r, double liquid_level, const CapillaryParams& p) {

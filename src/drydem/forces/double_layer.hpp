@@ -8,8 +8,9 @@
 //   for h ≤ h_cut, else 0 (i is pushed away from j; n from i to j as in M-0)
 // λ_D is the Debye length of the liquid (set by its ion content), ε_r its relative permittivity
 // (NMP: 32.2). In overlap the force stays at its contact value; Hertz takes over there. Scaled
-// like van der Waals (× scaling.hamaker_factor, paper Sec. 4.1) so that the balance of the two
-// surface forces stays the physical one. Conservative and central: no torque, no state.
+// like van der Waals (drying/scaling.cpp hands the law ε_r × the Hamaker factor) so that the
+// balance of the two surface forces stays the physical one. Conservative and central: no torque,
+// no state.
 // Off by default; docs/model.md "Double-layer repulsion".
 #pragma once
 #include "drydem/forces/lubrication.hpp"
@@ -84,7 +85,7 @@ struct DoubleLayerLaw {
     static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
         if (!c.double_layer) return {};
         const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
-        return {double_layer_amplitude(c.double_layer_permittivity, c.double_layer_potential, c.hamaker_factor),
+        return {double_layer_amplitude(c.double_layer_permittivity, c.double_layer_potential, 1.0),
                 c.double_layer_debye_length,
                 c.double_layer_cutoff > 0.0 ? c.double_layer_cutoff : lubrication_radius(ra, rb)};
     }

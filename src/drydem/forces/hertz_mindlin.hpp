@@ -47,6 +47,12 @@ inline double hertz_contact_time(double m_eff, double r_eff, double e_star, doub
     return 2.868 * std::pow(m_eff * m_eff / (r_eff * e_star * e_star * impact_speed), 0.2);
 }
 
+/// The overlap at which the Hertz spring (4/3) E* sqrt(R*) δ^{3/2} carries a force F:
+/// δ = (3F / (4 E* sqrt(R*)))^{2/3} [m] (the expected overlap of `drydem check`).
+inline double hertz_overlap(double force, double r_eff, double e_star) {
+    return std::cbrt(std::pow(3.0 * force / (4.0 * e_star * std::sqrt(r_eff)), 2.0));
+}
+
 /// E* and G* of two materials (M-2.1).
 inline HertzMindlinParams mix_hertz_mindlin(double e_i, double nu_i, double e_j, double nu_j,
                                             double restitution, double friction,

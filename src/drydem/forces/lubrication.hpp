@@ -15,7 +15,8 @@
 // of M-4.3 / V-7 holds exactly, and so does conservation of angular momentum; for touching
 // spheres both forms agree. Beyond κ = 1 the pair feels nothing (I-7: the normal force jumps
 // there).
-// Viscosity: the unreduced liquid η = 1.801 Pa s (C-17).
+// Viscosity: as simulated (drying/scaling.cpp): the unreduced liquid η = 1.801 Pa s in the paper's
+// scheme (C-17), η/b in force_ratio.
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
@@ -85,12 +86,6 @@ inline double lubrication_range(const LubricationParams& p, double r_i, double r
     return p.viscosity > 0.0 ? lubrication_radius(r_i, r_j) : 0.0;
 }
 
-/// The viscosity of the lubrication laws: the full liquid viscosity (C-17), or η/b when
-/// lubrication.uses_reduced_viscosity.
-inline double lubrication_viscosity(const Config& c) {
-    return c.lubrication_uses_reduced_viscosity ? c.viscosity / c.viscosity_reduction : c.viscosity;
-}
-
 /// The law as a pair law (pair_law.hpp): purely dissipative, keeps nothing.
 struct LubricationLaw {
     using Params = LubricationParams;
@@ -106,9 +101,9 @@ struct LubricationLaw {
     static PairResistance resistance(const PairGeometry& g, const Params& p) { return lubrication_resistance(g, p); }
     static PairResistance stiffness(const PairGeometry&, const PairGeometry&, const Params&) { return {}; }
     static bool keeps(const State&) { return false; }
-    /// [lubrication] keys (M-4).
+    /// [lubrication] keys (M-4); `viscosity` as simulated (drying/scaling.cpp: η, or η/b, C-17).
     static Params from_config(const Config& c, const SizeClass&, const SizeClass&) {
-        return {c.lubrication ? lubrication_viscosity(c) : 0.0, c.kappa_c};
+        return {c.lubrication ? c.viscosity : 0.0, c.kappa_c};
     }
 };
 

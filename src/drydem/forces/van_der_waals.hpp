@@ -3,7 +3,8 @@
 // sphere-sphere limit, valid for h ≪ R*).
 //   h_e     = max(h, h_min)                       (also in overlap: the force stays finite)
 //   F_vdW,i = + A^s R* / (6 h_e²) n   for h ≤ h_cut, else 0      (i is pulled toward j)
-// A^s is the scaled Hamaker constant k·A (k = 1e7, M-7; NCM-CB 9.5e-20 J physical, C-12).
+// A^s is the Hamaker constant as simulated (M-7: k·A in the paper's scheme; NCM-CB 9.5e-20 J
+// physical, C-12); the law receives it scaled (drying/scaling.cpp) and applies no factor.
 // h_cut defaults to the lubrication range r_L of the pair (C-13, chosen by the caller); no van der
 // Waals with the substrate (C-14). Conservative and central: no torque.
 #pragma once
@@ -28,9 +29,6 @@ inline PairForce van_der_waals(const PairGeometry& g, const VanDerWaalsParams& p
     const double h_e = std::max(g.gap, p.min_gap);
     return {(p.hamaker * g.r_eff / (6.0 * h_e * h_e)) * g.n, {}, {}};
 }
-
-/// A^s = k_A A: the scaled Hamaker constant (paper Sec. 4.1, k_A = scaling.hamaker_factor).
-inline double scaled_hamaker(double physical, const Config& c) { return physical * c.hamaker_factor; }
 
 /// Largest gap h at which the law acts (for the neighbour search); 0 when disabled.
 inline double van_der_waals_range(const VanDerWaalsParams& p, double /*r_i*/, double /*r_j*/) {
@@ -67,14 +65,13 @@ struct VanDerWaalsLaw {
         return {van_der_waals_stiffness(now, p), 0.0, 0.0, 0.0, 0.0, 0.0};
     }
     static bool keeps(const State&) { return false; }
-    /// [van_der_waals] keys (M-3): Hamaker constant and minimum gap by material pair, scaled by
-    /// scaling.hamaker_factor (paper Sec. 4.1); cut-off 0 = the pair's r_L = 2R* (C-13, C-15).
+    /// [van_der_waals] keys (M-3): Hamaker constant (as simulated: drying/scaling.cpp) and minimum
+    /// gap by material pair; cut-off 0 = the pair's r_L = 2R* (C-13, C-15).
     static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
         Params p;
         if (a.is_cb && b.is_cb) p = {c.hamaker_cb_cb, c.min_gap_cb_cb, 0.0};
         else if (a.is_cb || b.is_cb) p = {c.hamaker_ncm_cb, c.min_gap_ncm_cb, 0.0};
         else p = {c.hamaker_ncm_ncm, c.min_gap_ncm_ncm, 0.0};
-        p.hamaker = scaled_hamaker(p.hamaker, c);
         const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
         p.cutoff_gap = c.vdw_cutoff > 0.0 ? c.vdw_cutoff : lubrication_radius(ra, rb);
         return p;

@@ -352,6 +352,19 @@ void apply_override(toml::table& root, const std::string& spec) {
     t->insert_or_assign(leaf, *parsed->get("v"));
 }
 
+/// Cross-key rules of the [scaling] section: under "force_ratio" the capillary and Hamaker factors
+/// follow from k/b (docs/model.md M-7), so a value of the paper scheme's own is refused, not ignored.
+void check_scaling(const Config& c) {
+    if (c.scaling_scheme != "force_ratio") return;
+    for (const auto& [key, value] : {std::pair{"scaling.capillary_factor", c.capillary_factor},
+                                     std::pair{"scaling.hamaker_factor", c.hamaker_factor}})
+        if (value != 0.0)
+            throw InputError(fmt::format(
+                "config key '{}': {:g} is not allowed with scaling.scheme = \"force_ratio\", which scales "
+                "every conservative force by time_factor / viscosity_reduction = {:g}; allowed: 0 (remove the "
+                "key), or scaling.scheme = \"paper\"", key, value, c.time_factor / c.viscosity_reduction));
+}
+
 /// Cross-key rules of the [dryer] section (per-key ranges are in the schema).
 void check_dryer(const Config& c) {
     const std::size_t n = c.dryer_zone_lengths.size();
@@ -431,6 +444,7 @@ ParsedConfig parse_config(std::string_view toml_text, std::string_view source_na
                                          "allowed: one per measured loading{}",
                                          key, values->size(), n_measured, optional ? " or none" : ""));
     check_dryer(c);
+    check_scaling(c);
     if (c.calibration_initial_points > c.calibration_evaluations)
         throw InputError(fmt::format("config key 'calibration.initial_points': {} is more than "
                                      "calibration.evaluations = {}; allowed 0..{}", c.calibration_initial_points,

@@ -12,6 +12,22 @@ using namespace analysis;
 
 namespace {
 
+/// The overlap census: per type δ / r_smaller over the overlapping pairs, and the lens volume.
+nlohmann::ordered_json overlap_json(const OverlapCensus& c) {
+    auto stats = [](const OverlapStats& o) {
+        return nlohmann::ordered_json{{"pairs", o.pairs}, {"mean", o.mean}, {"median", o.median},
+                                      {"p99", o.p99}, {"max", o.max}, {"lens_volume_um3", o.lens_volume * 1e18}};
+    };
+    return {{"definition", "overlap / smaller radius over the overlapping pairs (substrate: (r - z) / r)"},
+            {"cb_cb", stats(c.cb_cb)},
+            {"ncm_cb", stats(c.ncm_cb)},
+            {"ncm_ncm", stats(c.ncm_ncm)},
+            {"cb_substrate", stats(c.cb_substrate)},
+            {"ncm_substrate", stats(c.ncm_substrate)},
+            {"all", stats(c.all)},
+            {"lens_volume_fraction_of_solid", c.lens_fraction()}};
+}
+
 /// Thickness, density, porosity, masses (Bulk) and the coordination numbers.
 void add_bulk(nlohmann::ordered_json& j, const AnalysisResult& r) {
     const Bulk& b = r.bulk;
@@ -41,6 +57,7 @@ void add_bulk(nlohmann::ordered_json& j, const AnalysisResult& r) {
         {"ncm_substrate_fraction", c.n_ncm ? double(c.ncm_substrate) / double(c.n_ncm) : 0.0},
         {"cb_substrate_fraction", c.n_cb ? double(c.cb_substrate) / double(c.n_cb) : 0.0},
         {"mean", c.mean()}};
+    j["overlap"] = overlap_json(r.overlaps);
 }
 
 /// The voxel image's porosity, chord lengths, pore sizes and timings.
