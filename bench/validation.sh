@@ -46,6 +46,8 @@ out=${OUT:-$here/results}
 archive=$here/docs/data/validation
 cal=$out/calibrate_20.1
 mkdir -p "$out" "$archive"
+# shellcheck source=bench/study_queue.sh
+source "$here/bench/study_queue.sh"
 
 cal_result() {  # the calibration's result.json: this machine's, else (a fresh machine) the archived one
   if [[ -f $cal/result.json ]]; then echo "$cal/result.json"; else echo "$archive/cal20/result.json"; fi
@@ -73,7 +75,7 @@ study() {  # $1 step, $2 example config, rest: drydem study arguments
   fi
   local sets
   sets=$(calibrated_sets)
-  restore_archived_runs "$step" completed
+  restore_archived_runs "$dir" "$archive/$step" completed
   local resume=()
   if [[ -f $dir/config.toml || -d $dir/runs ]]; then resume=(--resume); fi
   # shellcheck disable=SC2086
@@ -81,36 +83,6 @@ study() {  # $1 step, $2 example config, rest: drydem study arguments
     --quiet --no-plots "${resume[@]}" -o "$dir" > "$out/validation_$step.log" 2>&1 ||
     echo "== $step: drydem study exited $? (see $out/validation_$step.log)" >&2
   keep_small_files "$dir" "$archive/$step"
-}
-
-restore_archived_runs() {  # $1 step, $2 'completed' or 'all': archived runs, where OUT has no study yet
-  # `drydem study --resume` reads a completed run from its summary.json (and analysis/), so the
-  # archived small files stand in for the run; the others run from the start. The overlap reruns
-  # need the failed runs too (their config.toml and the error in summary.json).
-  local dir=$out/validation_$1 run
-  [[ -d $dir || ! -d $archive/$1 ]] && return 0
-  for run in "$archive/$1"/*/; do
-    [[ -f $run/summary.json ]] || continue
-    if [[ $2 == completed ]] && ! grep -q '"status": "completed"' "$run/summary.json"; then continue; fi
-    mkdir -p "$dir/runs"
-    cp -r "${run%/}" "$dir/runs/"
-    echo "== $1: $(basename "$run") restored from $archive/$1" >&2
-  done
-}
-
-keep_small_files() {  # $1 study folder, $2 archive folder
-  mkdir -p "$2"
-  cp "$1"/study.json "$1"/study.csv "$2/" 2>/dev/null || true
-  for run in "$1"/runs/*/; do
-    [[ -f $run/summary.json ]] || continue
-    local name dest
-    name=$(basename "$run")
-    dest=$2/$name
-    mkdir -p "$dest/analysis"
-    cp "$run/config.toml" "$run/summary.json" "$dest/"
-    cp "$run"/analysis/*.json "$run"/analysis/*.csv "$dest/analysis/" 2>/dev/null || true
-    /usr/bin/python3 "$here/scripts/thin_timeseries.py" "$run/timeseries.csv" "$dest/timeseries.csv"
-  done
 }
 
 calibrate() {
@@ -136,7 +108,7 @@ overlap_reruns() {  # $1 step: its runs stopped by the overlap limit, again with
   # result is the one the study would have given with the higher limit; the report counts the
   # completed one, and docs/validation.md names every such run.
   local step=$1 dir=$out/validation_$1
-  restore_archived_runs "$step" all
+  restore_archived_runs "$dir" "$archive/$step" all
   for run in "$dir"/runs/*/; do
     run=${run%/}
     [[ $run == *_overlap1.5 ]] && continue

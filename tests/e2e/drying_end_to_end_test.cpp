@@ -132,6 +132,60 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     EXPECT_NEAR(b["mass_balance"].get<double>(), 0.0, 1e-9);
     for (const char* f : {"transport_convergence.csv", "binder_profile.csv"})
         EXPECT_TRUE(std::filesystem::exists(dir / "analysis" / f)) << f;
+
+    // The overlap census of final.csv (docs/analysis.md) is the census of the last time-series row
+    // (the same particles, written to 10 digits), and the run's groups are in the summary.
+    const nlohmann::json& ov = a["overlap"];
+    for (const char* type : {"cb_cb", "ncm_cb", "ncm_ncm", "cb_substrate", "ncm_substrate", "all"})
+        ASSERT_TRUE(ov.contains(type)) << type;
+    EXPECT_GT(ov["all"]["pairs"].get<int>(), 0);
+    EXPECT_GE(ov["all"]["max"].get<double>(), ov["all"]["p99"].get<double>());
+    EXPECT_NEAR(ov["all"]["p99"].get<double>(), rows.back()[col("overlap_p99_rel")], 1e-6);
+    for (const auto& row : rows) {
+        EXPECT_GE(row[col("push_number")], 0.0);
+        EXPECT_GE(row[col("inertial_number")], 0.0);
+    }
+    ASSERT_EQ(summary["dimensionless_groups"]["zones"].size(), 2u);
+    EXPECT_GT(summary["dimensionless_groups"]["zones"][0]["simulated"]["push_number"].get<double>(), 0.0);
+}
+
+// The force-ratio scheme through a run (docs/model.md M-7), on the same thin film for 3,000 steps
+// (a full drying costs ~10x the paper scheme's: docs/validation.md): the summary records the scheme,
+// the laws got the scaled values, and every force ratio of the simulated film is the process's.
+TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
+    const Config c = load_config(default_config_toml(), "default",
+                                 {"run.name=e2e-fr", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
+                                  "film.areal_loading=2.5mg/cm^2", "formulation.ncm_diameters=[\"3 um\"]",
+                                  "output.snapshot_every=0", "output.timeseries_every=0.01s", "scaling.scheme=\"force_ratio\"",
+                                  "scaling.time_factor=1e6", "scaling.viscosity_reduction=100",
+                                  "scaling.stiffness_factor=2"});
+    const auto dir = testing_support::temp_dir();
+    RunOptions o;
+    o.output_dir = dir;
+    o.quiet = true;
+    o.plots = false;
+    o.stop_after_steps = 3000;
+    const DryingResult r = run_drying(c, o);
+    EXPECT_FALSE(r.completed);
+    EXPECT_NE(r.error.find("--stop-after-steps"), std::string::npos) << r.error;
+    std::ifstream js(dir / "summary.json");
+    const nlohmann::json s = nlohmann::json::parse(js);
+    EXPECT_EQ(s["scaling"]["scheme"], "force_ratio");
+    EXPECT_NEAR(s["scaling"]["capillary_factor"].get<double>(), 1e4, 1e-6);
+    EXPECT_NEAR(s["scaling"]["hamaker_cb_cb_J"]["scaled"].get<double>(), 4.64e-16, 1e-24);
+    EXPECT_NEAR(s["scaling"]["youngs_modulus_cb_Pa"]["scaled"].get<double>(), 2.84e11, 1.0);
+    EXPECT_NEAR(s["scaling"]["lubrication_viscosity_Pa_s"].get<double>(), 0.01801, 1e-12);
+    for (const auto& zone : s["dimensionless_groups"]["zones"])
+        for (const char* g : {"capillary_number_drag", "push_number", "vdw_over_capillary_cb_cb", "bond_number_largest_ncm"})
+            EXPECT_NEAR(zone["simulated"][g].get<double>(), zone["physical"][g].get<double>(),
+                        1e-9 * zone["physical"][g].get<double>()) << g;
+    // The time series measures the level's load from the first row on.
+    std::vector<std::string> h;
+    const auto rows = read_csv(dir / "timeseries.csv", h);
+    ASSERT_GE(rows.size(), 2u);
+    const std::size_t push = std::size_t(std::find(h.begin(), h.end(), "push_number") - h.begin());
+    ASSERT_LT(push, h.size());
+    EXPECT_GT(rows.back()[push], 0.0);
 }
 
 // A run that blows up (explicit integrator, time step far above the damping bound, guard set to

@@ -200,3 +200,31 @@ TEST(ParticleGeometry, InvertedDumpBoxIsRefusedAtItsLine) {
         EXPECT_TRUE(has(e.what(), "inverted.lammpstrj:6: box bounds 4e-05 0 in x are inverted or empty")) << e.what();
     }
 }
+
+// Issue 33: values in range key by key whose derived quantities were not finite (`drydem check`
+// printed -nan or inf and accepted them). Each is refused, naming a key behind it.
+TEST(DerivedQuantities, NonFiniteModelQuantitiesAreRefused) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"materials.poisson_ratio=-1", "materials.poisson_ratio"},
+        {"materials.substrate_poisson_ratio=-1", "materials.substrate_poisson_ratio"},
+        {"scaling.hamaker_factor=1e308", "scaling.hamaker_factor"},
+        {"lubrication.kappa_c=1e-300", "lubrication.kappa_c"},
+        {"scaling.viscosity_reduction=1e-300", "scaling.viscosity_reduction"},
+        {"materials.cb_youngs_modulus=1e-300", "materials.cb_youngs_modulus"},
+        {"analysis.voxel_size=1e-300", "analysis.voxel_size"},
+    };
+    for (const auto& [set, key] : cases) {
+        const std::string msg = config_error({set});
+        EXPECT_TRUE(has(msg, key)) << set << ": " << msg;
+        EXPECT_FALSE(has(msg, "nan")) << set << ": " << msg;
+    }
+}
+
+// A run estimated beyond a day is allowed but its estimate is there to warn with (`drydem check`,
+// `drydem run`): k = 2.5 makes the default film ~1e11 steps.
+TEST(DerivedQuantities, WallTimeEstimateOfAYearLongRun) {
+    const DerivedQuantities d = derived_quantities(load_config("", "t", {"scaling.time_factor=2.5"}));
+    EXPECT_GT(estimated_wall_time(d, 2), 365 * wall_time_warning);
+    const DerivedQuantities paper = derived_quantities(load_config(default_config_toml(), "default"));
+    EXPECT_LT(estimated_wall_time(paper, 2), wall_time_warning);
+}

@@ -10,6 +10,7 @@
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <fmt/format.h>
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -113,24 +114,16 @@ void print_check(const Config& c) {
                    s.shrinkage_rates_physical[z] * 1e6, s.level_speeds_scaled[z]);
 
     // Time-step limits for the smallest particle (M-9.2).
-    const SizeClass& cb = *std::min_element(r.species.begin(), r.species.end(),
-                                            [](const SizeClass& a, const SizeClass& b) { return a.diameter < b.diameter; });
-    const double rc = 0.5 * cb.diameter, m = cb.density * sphere_volume(rc);
-    const double e_cb = cb.is_cb ? s.youngs_cb[1] : s.youngs_ncm[1];
-    const HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair_params(r.cb_species(), r.cb_species()));
-    const double tr = rayleigh_time(rc, cb.density, e_cb, c.poisson_ratio);
+    const TimeScales ts = time_scales(c, r, s, ff);
     const double cap = c.time_step_cap();
-    fmt::print("\nTime step, smallest particle d = {:.3g} um, m = {:.4g} kg\n", cb.diameter * 1e6, m);
+    fmt::print("\nTime step, smallest particle d = {:.3g} um, m = {:.4g} kg\n", ts.diameter * 1e6, ts.mass);
     fmt::print("  integrator                {} (numerics.integrator), largest step {:.3g} s (scaled)\n",
                c.integrator, cap);
-    fmt::print("  Rayleigh time             {:.3g} s (0.2 T_R = {:.3g} s)\n", tr, 0.2 * tr);
-    fmt::print("  Hertz contact time        {:.3g} s at 1 m/s, {:.3g} s at the level speed\n",
-               hertz_contact_time(m / 2, rc / 2, hm.e_star, 1.0),
-               hertz_contact_time(m / 2, rc / 2, hm.e_star, s.level_speeds_scaled.front()));
-    fmt::print("  Stokes drag (scaled)      2 m/(6 pi eta r) = {:.3g} s\n",
-               2 * stokes_relaxation_time(m, rc, StokesDragParams{s.drag_viscosity_scaled}));
-    fmt::print("  capillary spring period   {:.3g} s\n",
-               capillary_stiffness(ff.capillary) > 0 ? 2 * pi * std::sqrt(m / capillary_stiffness(ff.capillary)) : INFINITY);
+    fmt::print("  Rayleigh time             {:.3g} s (0.2 T_R = {:.3g} s)\n", ts.rayleigh, 0.2 * ts.rayleigh);
+    fmt::print("  Hertz contact time        {:.3g} s at 1 m/s, {:.3g} s at the level speed\n", ts.contact_at_1m_s,
+               ts.contact_at_level_speed);
+    fmt::print("  Stokes drag (scaled)      2 m/(6 pi eta r) = {:.3g} s\n", ts.drag_relaxation);
+    fmt::print("  capillary spring period   {:.3g} s\n", ts.capillary_period);
     print_guard_clusters(c, r);
     fmt::print("\n");
     print_groups(dimensionless_groups(c));
@@ -145,6 +138,11 @@ void print_check(const Config& c) {
                t_sim, s.process_time(t_sim), c.relaxation);
     fmt::print("  steps                     {:.3g} at the largest step (the guard may lower it)\n", steps);
     fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
+    const int cores = c.threads > 0 ? c.threads : std::max(1, omp_get_num_procs());
+    const double wall = estimated_wall_time(d, cores);
+    fmt::print("  wall time                 ~{:.3g} h on {} cores at {:.3g} particle-steps/s per core{}\n", wall / 3600,
+               cores, reference_particle_steps_per_core,
+               wall > wall_time_warning ? "; warning: more than a day (`drydem run` warns too)" : "");
     const double memory = double(r.particle_count()) * bytes_per_particle + 5e6;
     fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers){}\n", memory / 1e6,
                memory > 0.8 * physical_memory_bytes() ? fmt::format("; more than 80 % of this machine's {:.3g} GB: "
@@ -152,10 +150,7 @@ void print_check(const Config& c) {
                                                                    physical_memory_bytes() / 1e9)
                                                       : "");
     if (c.analysis_at_end && c.analysis_voxel_size > 0.0) {
-        // docs/analysis.md: the voxel image up to the film top (the top
-        // stands above the 2.4 g/cm3 estimate by up to one large particle).
-        const double voxels = c.box_x / c.analysis_voxel_size * (c.box_y / c.analysis_voxel_size) *
-                              ((h_final + r.largest_diameter()) / c.analysis_voxel_size);
+        const double voxels = voxel_image_voxels(c, r, h_final);
         fmt::print("  analysis at the end       voxel image ~{:.2g} voxels at {:.3g} um, ~{:.1f} GB "
                    "(analysis.voxel_size; 0 = none)\n",
                    voxels, c.analysis_voxel_size * 1e6, analysis::voxel_analysis_bytes * voxels / 1e9);

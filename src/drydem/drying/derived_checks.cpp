@@ -2,12 +2,18 @@
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/analysis/analyze.hpp"
+#include "drydem/drying/dimensionless_groups.hpp"
 #include "drydem/drying/scaling.hpp"
+#include "drydem/drying/stability_clusters.hpp"
 #include "drydem/setup/formulation.hpp"
+#include "drydem/core/sphere.hpp"
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <unistd.h>
+#include <tuple>
 #include <utility>
 
 namespace drydem {
@@ -86,7 +92,139 @@ void check_minimum_image(const Config& c, const FilmRecipe& r, const ScaledParam
                 key, side * 1e6, need * 0.5e6, widest.diameter_i * 1e6, widest.diameter_j * 1e6, need * 1e6));
 }
 
+/// The keys behind the scaled forces and viscosities, named by every refusal of a model quantity.
+constexpr std::string_view kScalingKeys[] = {"scaling.scheme", "scaling.time_factor", "scaling.viscosity_reduction",
+                                             "scaling.capillary_factor", "scaling.hamaker_factor",
+                                             "scaling.stiffness_factor"};
+
+std::vector<std::string_view> with_scaling(std::vector<std::string_view> keys) {
+    keys.insert(keys.end(), std::begin(kScalingKeys), std::end(kScalingKeys));
+    return keys;
+}
+
+/// Every dimensionless group `drydem check` prints (docs/model.md M-7), physical and as simulated:
+/// finite and not negative. A law's parameters can each be in range and still overflow together.
+void check_groups(const Config& c, const std::vector<std::string>& bare) {
+    using G = double Groups::*;
+    const std::vector<std::string_view> fluid = {"materials.viscosity", "materials.surface_tension",
+                                                 "materials.contact_angle"};
+    const std::vector<std::string_view> contact = {"materials.ncm_youngs_modulus", "materials.cb_youngs_modulus",
+                                                   "materials.substrate_youngs_modulus", "materials.poisson_ratio",
+                                                   "materials.substrate_poisson_ratio"};
+    const std::vector<std::string_view> vdw = {"van_der_waals.hamaker_cb_cb", "van_der_waals.hamaker_ncm_cb",
+                                               "van_der_waals.min_gap_cb_cb", "van_der_waals.min_gap_ncm_cb"};
+    const auto plus = [](std::vector<std::string_view> a, const std::vector<std::string_view>& b) {
+        a.insert(a.end(), b.begin(), b.end());
+        return a;
+    };
+    const std::tuple<std::string_view, G, std::vector<std::string_view>> rows[] = {
+        {"capillary number (drag)", &Groups::capillary_drag, fluid},
+        {"capillary number (lubrication)", &Groups::capillary_lubrication, plus(fluid, {"lubrication.kappa_c"})},
+        {"push number", &Groups::push, plus(fluid, {"film.areal_loading"})},
+        {"Stokes number (NCM)", &Groups::stokes_ncm, plus(fluid, {"materials.ncm_density"})},
+        {"Stokes number (CB)", &Groups::stokes_cb, plus(fluid, {"materials.cb_density"})},
+        {"inertial number", &Groups::inertial, plus(fluid, {"materials.ncm_density"})},
+        {"van der Waals / capillary (CB-CB)", &Groups::vdw_capillary_cb_cb, plus(fluid, vdw)},
+        {"van der Waals / capillary (NCM-CB)", &Groups::vdw_capillary_ncm_cb, plus(fluid, vdw)},
+        {"Bond number", &Groups::bond_ncm, plus(fluid, {"scaling.gravity", "materials.ncm_density"})},
+        {"expected Hertz overlap (CB-CB)", &Groups::overlap_cb_cb, plus(contact, vdw)},
+        {"expected Hertz overlap (NCM-CB)", &Groups::overlap_ncm_cb, plus(contact, fluid)},
+        {"expected Hertz overlap (NCM-substrate)", &Groups::overlap_ncm_substrate, plus(contact, fluid)},
+    };
+    const DimensionlessGroups d = dimensionless_groups(c);
+    for (std::size_t z = 0; z < d.simulated.size(); ++z)
+        for (const auto& [name, member, keys] : rows)
+            for (const auto& [which, g] : {std::pair{"physical", d.physical[z]}, std::pair{"simulated", d.simulated[z]}})
+                if (!(std::isfinite(g.*member) && g.*member >= 0.0))
+                    refuse(c, fmt::format("the {} {} in dryer zone {} is {:g}; it must be finite", which, name,
+                                          z + 1, g.*member),
+                           with_scaling(keys), bare);
+}
+
+/// The time scales `drydem check` prints: finite and positive (the capillary period may be infinite
+/// only with the capillary force off).
+void check_time_scales(const Config& c, const FilmRecipe& r, const ScaledParameters& s,
+                       const std::vector<std::string>& bare) {
+    const TimeScales t = time_scales(c, r, s, make_drying_force_field(c, r, s));
+    const bool capillary_off = s.surface_tension_scaled == 0.0;
+    for (const auto& [name, value] : {std::pair{"Rayleigh time", t.rayleigh}, std::pair{"Hertz contact time", t.contact_at_1m_s},
+                                      std::pair{"Hertz contact time at the level speed", t.contact_at_level_speed},
+                                      std::pair{"drag relaxation time", t.drag_relaxation},
+                                      std::pair{"capillary spring period", capillary_off ? 1.0 : t.capillary_period}})
+        if (!positive_finite(value))
+            refuse(c, fmt::format("the {} of the smallest particle is {:g} s; it must be finite and positive", name, value),
+                   with_scaling({"materials.cb_youngs_modulus", "materials.ncm_youngs_modulus", "materials.poisson_ratio",
+                                 "materials.viscosity", "materials.surface_tension", "formulation.cb_diameter"}),
+                   bare);
+}
+
+/// The stability guard's rates on its reference clusters, for both integrators (as `drydem check`
+/// prints them): finite, and the guarded step they give positive.
+void check_guard_rates(const Config& c, const FilmRecipe& r, const std::vector<std::string>& bare) {
+    const double overlap = 0.02 * 0.5 * r.species[std::size_t(r.cb_species())].diameter;
+    for (const char* integrator : {"explicit", "semi_implicit"}) {
+        Config ci = c;
+        ci.integrator = integrator;
+        for (const ReferenceCluster& k : reference_clusters(r, overlap)) {
+            const Simulation::StabilityEstimate e = cluster_simulation(ci, r, k).stability_estimate();
+            const double dt = guarded_time_step(ci.time_step_cap(), e);
+            if (std::isfinite(e.damping_rate) && std::isfinite(e.stiffness_rate) && positive_finite(dt)) continue;
+            refuse(c, fmt::format("the stability guard ({}) on the reference cluster '{}' gives a damping rate of {:g} "
+                                  "/s, a stiffness rate of {:g} rad/s and a step of {:g} s; they must be finite and "
+                                  "the step positive", integrator, k.name, e.damping_rate, e.stiffness_rate, dt),
+                   with_scaling({"materials.viscosity", "lubrication.kappa_c", "materials.cb_youngs_modulus",
+                                 "materials.ncm_youngs_modulus", "materials.poisson_ratio", "contact.restitution",
+                                 "run.time_step"}),
+                   bare);
+        }
+    }
+}
+
+/// The end-of-run voxel image (docs/analysis.md): a finite size that fits in this machine's memory
+/// where that is known, else in 1e11 voxels.
+void check_voxel_image(const Config& c, const FilmRecipe& r, double final_thickness, const std::vector<std::string>& bare) {
+    if (!c.analysis_at_end || c.analysis_voxel_size <= 0.0) return;
+    const double voxels = voxel_image_voxels(c, r, final_thickness);
+    const double have = physical_memory_bytes(), bytes = analysis::voxel_analysis_bytes * voxels;
+    const double limit = have > 0.0 ? have : analysis::voxel_analysis_bytes * 1e11;
+    if (!positive_finite(voxels) || bytes > limit)
+        refuse(c, fmt::format("the end-of-run voxel image would have ~{:.3g} voxels at {:g} um (~{:.3g} GB); allowed "
+                              "what fits in {:.3g} GB", voxels, c.analysis_voxel_size * 1e6, bytes / 1e9, limit / 1e9),
+               {"analysis.voxel_size", "analysis.at_end", "film.box_x", "film.box_y", "film.areal_loading"}, bare);
+}
+
 } // namespace
+
+double voxel_image_voxels(const Config& c, const FilmRecipe& r, double final_thickness) {
+    // The image reaches the film top, which stands above the uncalendered estimate by up to one
+    // large particle (docs/analysis.md).
+    return c.box_x / c.analysis_voxel_size * (c.box_y / c.analysis_voxel_size) *
+           ((final_thickness + r.largest_diameter()) / c.analysis_voxel_size);
+}
+
+TimeScales time_scales(const Config& c, const FilmRecipe& r, const ScaledParameters& s, const ForceField& ff) {
+    int smallest = 0;
+    for (int k = 0; k < int(r.species.size()); ++k)
+        if (r.species[std::size_t(k)].diameter < r.species[std::size_t(smallest)].diameter) smallest = k;
+    const SizeClass& p = r.species[std::size_t(smallest)];
+    TimeScales t;
+    t.diameter = p.diameter;
+    const double rad = 0.5 * p.diameter;
+    t.mass = p.density * sphere_volume(rad);
+    const double e = p.is_cb ? s.youngs_cb[1] : s.youngs_ncm[1];
+    const HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair_params(smallest, smallest));
+    t.rayleigh = rayleigh_time(rad, p.density, e, c.poisson_ratio);
+    t.contact_at_1m_s = hertz_contact_time(t.mass / 2, rad / 2, hm.e_star, 1.0);
+    t.contact_at_level_speed = hertz_contact_time(t.mass / 2, rad / 2, hm.e_star, s.level_speeds_scaled.front());
+    t.drag_relaxation = 2 * stokes_relaxation_time(t.mass, rad, StokesDragParams{s.drag_viscosity_scaled});
+    const double k_cap = capillary_stiffness(ff.capillary);
+    t.capillary_period = k_cap > 0 ? 2 * std::numbers::pi * std::sqrt(t.mass / k_cap) : INFINITY;
+    return t;
+}
+
+double estimated_wall_time(const DerivedQuantities& d, int threads) {
+    return d.steps * d.particles / (reference_particle_steps_per_core * std::max(1, threads));
+}
 
 DerivedQuantities derived_quantities(const Config& c) {
     DerivedQuantities d;
@@ -170,6 +308,10 @@ void check_derived_quantities(const Config& c, const std::vector<std::string>& b
                    {"scaling.stiffness_factor", "materials.ncm_youngs_modulus", "materials.cb_youngs_modulus",
                     "materials.substrate_youngs_modulus"}, bare);
     check_minimum_image(c, r, s);
+    check_groups(c, bare);
+    check_time_scales(c, r, s, bare);
+    check_guard_rates(c, r, bare);
+    check_voxel_image(c, r, estimated_travel(c, r, s).final_thickness, bare);
 
     // Steps (M-8.3) and the end criterion's window.
     if (!(c.relaxation < c.max_process_time))

@@ -4,7 +4,9 @@
 // and still give 1e20 particles (a bare `box_x = 40` is 40 m) or 1e300 steps. Each refusal names
 // the keys that caused it.
 #pragma once
+#include "drydem/drying/scaling.hpp"
 #include "drydem/io/config.hpp"
+#include "drydem/setup/formulation.hpp"
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -35,6 +37,12 @@ struct DerivedQuantities {
     double dryer_steps = 0.0;      ///< RK4 steps of the dryer model over all zones
 };
 
+/// Particle-steps per second and core a run is estimated at (the semi-implicit paper scheme
+/// measured 2.3e6-3.4e6 on one core of the 2-core reference machine, docs/performance.md); a
+/// run whose estimate passes a day is warned about.
+inline constexpr double reference_particle_steps_per_core = 2e6;
+inline constexpr double wall_time_warning = 86400.0; ///< [s]
+
 /// parse_config, then check_derived_quantities: a configuration every command can run.
 Config load_config(std::string_view toml_text, std::string_view source_name,
                                  const std::vector<std::string>& overrides = {});
@@ -42,6 +50,24 @@ Config load_config_file(const std::string& path, const std::vector<std::string>&
 
 /// Computes the derived quantities without checking them (InputError only from make_recipe).
 [[nodiscard]] DerivedQuantities derived_quantities(const Config& c);
+
+/// Estimated wall time of the run's DEM part on `threads` cores [s]: steps at the largest step x
+/// particles / (reference_particle_steps_per_core x threads); the guard may lower the step.
+[[nodiscard]] double estimated_wall_time(const DerivedQuantities& d, int threads);
+
+/// Voxels of the end-of-run voxel image (analysis.voxel_size) for a film of this thickness [m].
+[[nodiscard]] double voxel_image_voxels(const Config& c, const FilmRecipe& r, double final_thickness);
+
+/// The time scales of the smallest particle that bound the step (M-9.2, `drydem check`): Rayleigh
+/// time, Hertz contact time at 1 m/s and at the first level speed, twice the drag relaxation time,
+/// the period of the capillary spring (infinite when the capillary force is off) [s].
+struct TimeScales {
+    double diameter = 0.0, mass = 0.0; ///< of the smallest particle [m], [kg]
+    double rayleigh = 0.0, contact_at_1m_s = 0.0, contact_at_level_speed = 0.0;
+    double drag_relaxation = 0.0, capillary_period = 0.0;
+};
+[[nodiscard]] TimeScales time_scales(const Config& c, const FilmRecipe& r, const ScaledParameters& s,
+                                     const ForceField& ff);
 
 /// Throws InputError when a derived quantity is not finite and positive or beyond the limits
 /// above, naming the keys behind it. `bare_lengths`: length keys the input gave as bare numbers

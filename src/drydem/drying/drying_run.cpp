@@ -152,6 +152,13 @@ void DryingRun::start() {
                "(stable < 2), level speeds {} m/s (scaled)", sim_.threads(), c_.integrator,
                sim_.settings().dt, c_.time_step_cap(), guard_.indicator(),
                fmt::join(film_.scaled.level_speeds_scaled, ", "));
+    const DerivedQuantities plan = derived_quantities(c_);
+    const double estimate = estimated_wall_time(plan, sim_.threads());
+    if (!resumed_ && estimate > wall_time_warning)
+        log_->warn("this run is estimated at {:.3g} days on {} threads ({:.3g} particle-steps at {:.3g} per second "
+                   "and core; the guard may lower the step further): check scaling.time_factor, run.time_step and "
+                   "the box (`drydem check`)", estimate / 86400.0, sim_.threads(), plan.steps * plan.particles,
+                   reference_particle_steps_per_core);
     const StepView at = view(false, 0);
     for (auto& o : outputs_) o->open(at, resumed_.has_value());
 }

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Issue 29: convergence of the force-ratio scheme (docs/validation.md, "Convergence of the
+# force-ratio scheme"). One queue of named steps, each a `drydem study` that resumes where it
+# stopped (bench/study_queue.sh); two instances with disjoint step lists use both cores.
+#
+# Quick case (3 mg/cm2, 40 um box), examples/quick_force_ratio.toml: f = k/b = 9e3, b = 100,
+# e = 75 unless a step says otherwise.
+#   q_paper     the paper's scheme (examples/quick.toml): the reference the scheme is compared to
+#   q_base      the force-ratio setting itself
+#   q_e7.5 q_e24 q_e240
+#               overlap knob: scaling.stiffness_factor (overlap ~ (f/e)^(2/3)); with q_base a decade
+#               and more, extrapolated to zero overlap
+#   q_b33 q_b316
+#               Stokes knob at fixed f: b = 33.3 (k = 3e5, k b = 1e7) and b = 316 (k = 2.85e6,
+#               k b = 9e8); with q_base (k b = 9e7) two decades of the Stokes number
+#   q_ecb400    CB Young's modulus 400 GPa instead of 142 (at small overlap)
+#   q_dt_half   run.time_step at half of q_base's mean step
+#   archive:STEP
+#               the runs STEP has finished so far into the archive
+#
+# usage: bench/convergence.sh STEP...   (then /usr/bin/python3 scripts/convergence_report.py)
+# environment: THREADS (1) threads per run, JOBS (1) runs at a time, SEEDS (1) seeds per step,
+#   OUT (results), DRYDEM (build/drydem; a frozen copy keeps a long queue on one binary)
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+drydem=${DRYDEM:-$here/build/drydem}
+threads=${THREADS:-1}
+out=${OUT:-$here/results}
+archive=$here/docs/data/convergence
+mkdir -p "$out" "$archive"
+# shellcheck source=bench/study_queue.sh
+source "$here/bench/study_queue.sh"
+
+study() {  # $1 step, $2 example config, rest: drydem study arguments
+  local step=$1 config=$2 dir=$out/convergence_$1
+  shift 2
+  restore_archived_runs "$dir" "$archive/$step" completed
+  local resume=()
+  if [[ -f $dir/config.toml || -d $dir/runs ]]; then resume=(--resume); fi
+  "$drydem" study "$here/examples/$config" "$@" --seeds "${SEEDS:-1}" --jobs "${JOBS:-1}" \
+    --threads "$threads" --quiet --no-plots "${resume[@]}" -o "$dir" > "$out/convergence_$step.log" 2>&1 ||
+    echo "== $step: drydem study exited $? (see $out/convergence_$step.log)" >&2
+  keep_small_files "$dir" "$archive/$step"
+}
+
+fr=quick_force_ratio.toml
+for step in "$@"; do
+  echo "== $step ($(date -u +%H:%M))" >&2
+  case $step in
+    q_paper) study q_paper quick.toml ;;
+    q_base) study q_base $fr ;;
+    q_e7.5) study q_e7.5 $fr --set scaling.stiffness_factor=7.5 ;;
+    q_e24) study q_e24 $fr --set scaling.stiffness_factor=24 ;;
+    q_e240) study q_e240 $fr --set scaling.stiffness_factor=240 ;;
+    q_b33) study q_b33 $fr --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
+    q_b316) study q_b316 $fr --set scaling.time_factor=2.846e6 --set scaling.viscosity_reduction=316.23 ;;
+    q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa ;;
+    q_dt_half) study q_dt_half $fr --set "run.time_step=${DT_HALF:?set DT_HALF to half the mean step of q_base}" ;;
+    archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
+    *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
+  esac
+done

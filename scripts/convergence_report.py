@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""Convergence of the force-ratio scheme (issue 29): tables and plots from docs/data/convergence.
+
+Every step of bench/convergence.sh is a study whose runs are archived under
+docs/data/convergence/STEP/RUN (config, summary, analysis, thinned time series). This script
+writes docs/data/convergence/report.md and docs/figures/convergence_*.png: one row per step with
+its knobs (scheme, k, b, e, the simulated Stokes number and expected overlap from the run's own
+dimensionless groups) and the yardstick (final and relaxed thickness, density, porosity,
+coordination per pair type, pore-size peak and median, when and where the film leaves the level,
+p99 and max overlap), then each knob's series against q_base with the verdict: a difference
+counts as zero below twice the combined standard error of the seeds (one seed: the seed spread of
+q_paper stands in, and the verdict says so).
+
+usage: /usr/bin/python3 scripts/convergence_report.py [--data DIR] [--figures DIR]
+"""
+import argparse
+import csv
+import json
+import math
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from validation_report import FRONT_GAP_UM, ROOT, mean_sd, runs  # noqa: E402
+
+# The quick case leaves the level after a few seconds; the validation's 20 s applies to 20.1.
+QUICK_FRONT_AFTER_S = 2.0
+# (step, knob value, label) per series; q_base is the setting the others move away from.
+SERIES = {
+    "overlap knob: scaling.stiffness_factor e": [("q_e7.5", 7.5), ("q_e24", 24), ("q_base", 75), ("q_e240", 240)],
+    "Stokes knob: k b at f = k/b = 9e3": [("q_b33", 1e7), ("q_base", 9e7), ("q_b316", 9e8)],
+    "CB Young's modulus (GPa)": [("q_base", 142), ("q_ecb400", 400)],
+    "time step": [("q_base", 1.0), ("q_dt_half", 0.5)],
+}
+STEPS = ["q_paper", "q_base", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_dt_half"]
+
+
+def leaves_level(run_dir: Path, after_s: float):
+    """Process time and level where the film's p99 top first stands FRONT_GAP_UM above the level."""
+    ts = run_dir / "timeseries.csv"
+    if not ts.is_file():
+        return None, None
+    for row in csv.DictReader(ts.open()):
+        t, level, top = float(row["process_time_s"]), float(row["liquid_level_um"]), float(row["film_top_p99_um"])
+        if t > after_s and top - level > FRONT_GAP_UM:
+            return t, level
+    return None, None
+
+
+def yardstick(r):
+    """The quantities compared across a series, for one run."""
+    a = json.loads((r["_dir"] / "analysis" / "analysis.json").read_text())
+    t_leave, level_leave = leaves_level(r["_dir"], QUICK_FRONT_AFTER_S)
+    co, ov = a["coordination"], a.get("overlap", {})
+    zone2 = r["dimensionless_groups"]["zones"][-1]["simulated"]
+    return {
+        "thickness": r["final_thickness_um"], "relaxed": r["final_thickness_relaxed_um"],
+        "density": r["density_g_cm3"], "porosity": r["porosity"],
+        "z_ncm_ncm": co["ncm_ncm"], "z_ncm_cb": co["ncm_cb"], "z_cb_cb": co["cb_cb"],
+        "psd_peak": a.get("psd_peak_um"), "psd_median": a.get("psd_median_um"),
+        "t_leave": t_leave, "level_leave": level_leave,
+        "p99": ov.get("all", {}).get("p99"), "max": ov.get("all", {}).get("max"),
+        "stokes": zone2["stokes_number_largest_ncm"], "overlap_expected": zone2["hertz_overlap_ncm_cb_capillary"],
+        "push": zone2["push_number"], "wall": r["wall_time_s"], "steps": r["steps"],
+        "dt": r["time_step_mean_s"], "k": r["scaling"]["time_factor_k"], "b": r["scaling"]["viscosity_reduction_b"],
+        "e": r["scaling"].get("stiffness_factor_e", 1.0), "scheme": r["scaling"].get("scheme", "paper"),
+    }
+
+
+COLUMNS = [("thickness", "final thickness (µm)", 2), ("relaxed", "relaxed (µm)", 2), ("density", "density (g/cm³)", 3),
+           ("porosity", "porosity", 3), ("z_ncm_ncm", "Z NCM-NCM", 2), ("z_ncm_cb", "Z NCM-CB", 2),
+           ("z_cb_cb", "Z CB-CB", 2), ("psd_median", "pore median (µm)", 3), ("t_leave", "leaves level (s)", 2),
+           ("level_leave", "at level (µm)", 2), ("p99", "p99 overlap", 3), ("max", "max overlap", 3)]
+
+
+def cell(values, digits):
+    m, s, n = mean_sd(values)
+    if m is None:
+        return "–"
+    return f"{m:.{digits}f} ± {s:.{digits}f}" if n > 1 else f"{m:.{digits}f}"
+
+
+class Report:
+    def __init__(self, data: Path, figures: Path):
+        self.data, self.figures, self.lines = data, figures, []
+        self.steps = {s: [yardstick(r) for r in runs(data / s)] for s in STEPS}
+
+    def say(self, *lines):
+        self.lines.extend(lines)
+
+    def settings(self):
+        self.say("## The runs", "",
+                 "| step | scheme | k | b | e | seeds | St (largest NCM, zone 2) | expected overlap NCM-CB | "
+                 "push number (zone 2) | mean Δt (s) | steps | wall (s, 1 thread) |",
+                 "|---|---|---|---|---|---|---|---|---|---|---|---|")
+        for s in STEPS:
+            y = self.steps[s]
+            if not y:
+                self.say(f"| {s} | not run yet | | | | 0 | | | | | | |")
+                continue
+            f = y[0]
+            self.say(f"| {s} | {f['scheme']} | {f['k']:g} | {f['b']:g} | {f['e']:g} | {len(y)} | {f['stokes']:.3g} | "
+                     f"{f['overlap_expected']:.3g} | {f['push']:.3g} | {cell([x['dt'] for x in y], 13)} | "
+                     f"{cell([x['steps'] for x in y], 0)} | {cell([x['wall'] for x in y], 0)} |")
+        self.say("")
+
+    def yardsticks(self):
+        self.say("## Yardstick per step (mean ± s.d. over the seeds)", "",
+                 "| step | " + " | ".join(c[1] for c in COLUMNS) + " |", "|---|" + "---|" * len(COLUMNS))
+        for s in STEPS:
+            y = self.steps[s]
+            if y:
+                self.say(f"| {s} | " + " | ".join(cell([x[k] for x in y], d) for k, _, d in COLUMNS) + " |")
+        self.say("")
+
+    def yardstick_sd(self):
+        """The seed spread of the thickness: the step's own with several seeds, else q_paper's."""
+        for s in ["q_base", "q_paper"]:
+            m, sd, n = mean_sd([x["thickness"] for x in self.steps[s]])
+            if n > 1:
+                return sd, s
+        return None, None
+
+    def series(self):
+        sd_ref, ref = self.yardstick_sd()
+        self.say("## Series against q_base", "")
+        if sd_ref is not None:
+            self.say(f"Yardstick: twice the combined standard error of the two steps' seeds; where a step has one "
+                     f"seed, the thickness s.d. of {ref} ({sd_ref:.3f} µm) stands in for its spread.", "")
+        base = self.steps["q_base"]
+        for title, points in SERIES.items():
+            have = [(s, x) for s, x in points if self.steps[s]]
+            if len(have) < 2 or not base:
+                continue
+            self.say(f"### {title}", "", "| step | knob | thickness (µm) | Δ vs q_base (µm) | 2 × combined s.e. (µm) | moves? |",
+                     "|---|---|---|---|---|---|")
+            xs, ms, es = [], [], []
+            for s, x in have:
+                t = [y["thickness"] for y in self.steps[s]]
+                m, sd, n = mean_sd(t)
+                mb, sdb, nb = mean_sd([y["thickness"] for y in base])
+                sd = sd if n > 1 else (sd_ref or 0.0)
+                sdb = sdb if nb > 1 else (sd_ref or 0.0)
+                se2 = 2 * math.sqrt(sd ** 2 / n + sdb ** 2 / nb)
+                verdict = "–" if s == "q_base" else ("no" if abs(m - mb) < se2 else "**yes**")
+                self.say(f"| {s} | {x:g} | {cell(t, 2)} | {m - mb:+.2f} | {se2:.2f} | {verdict} |")
+                xs.append(x), ms.append(m), es.append(sd)
+            self.say("")
+            fig, ax = plt.subplots(figsize=(5, 3.5))
+            ax.errorbar(xs, ms, yerr=es, fmt="o-")
+            ax.set_xscale("log" if max(xs) / min(xs) > 5 else "linear")
+            ax.set_xlabel(title), ax.set_ylabel("final thickness (µm)")
+            ax.set_title("quick case, force-ratio scheme", fontsize=9)
+            fig.tight_layout()
+            name = title.split(":")[0].split(" ")[0].lower().replace("'", "")
+            fig.savefig(self.figures / f"convergence_{name}.png", dpi=120)
+            plt.close(fig)
+
+    def write(self):
+        self.say("# Convergence of the force-ratio scheme (generated by scripts/convergence_report.py)", "",
+                 "Runs: `bench/convergence.sh STEP` (one thread per run); quick case 3 mg/cm², 40 µm box. "
+                 "Wall times are of runs that shared the 2-core machine with another run or a build: "
+                 "not benchmarks.", "")
+        self.settings()
+        self.yardsticks()
+        self.series()
+        (self.data / "report.md").write_text("\n".join(self.lines) + "\n")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--data", type=Path, default=ROOT / "docs/data/convergence")
+    p.add_argument("--figures", type=Path, default=ROOT / "docs/figures")
+    a = p.parse_args()
+    Report(a.data, a.figures).write()
+    print((a.data / "report.md").read_text())
+
+
+if __name__ == "__main__":
+    main()
