@@ -7,9 +7,9 @@
 # e = 75 unless a step says otherwise.
 #   q_paper     the paper's scheme (examples/quick.toml): the reference the scheme is compared to
 #   q_base      the force-ratio setting itself
-#   q_e7.5 q_e24 q_e240
-#               overlap knob: scaling.stiffness_factor (overlap ~ (f/e)^(2/3)); with q_base a decade
-#               and more, extrapolated to zero overlap
+#   q_e1 q_e2.4 q_e7.5 q_e24 q_e240
+#               overlap knob: scaling.stiffness_factor (overlap ~ (f/e)^(2/3)); with q_base two
+#               decades and more, extrapolated to zero overlap
 #   q_b33 q_b316
 #               Stokes knob at fixed f: b = 33.3 (k = 3e5, k b = 1e7) and b = 316 (k = 2.85e6,
 #               k b = 9e8); with q_base (k b = 9e7) two decades of the Stokes number
@@ -49,6 +49,8 @@ for step in "$@"; do
   case $step in
     q_paper) study q_paper quick.toml ;;
     q_base) study q_base $fr ;;
+    q_e1) study q_e1 $fr --set scaling.stiffness_factor=1 ;;
+    q_e2.4) study q_e2.4 $fr --set scaling.stiffness_factor=2.4 ;;
     q_e7.5) study q_e7.5 $fr --set scaling.stiffness_factor=7.5 ;;
     q_e24) study q_e24 $fr --set scaling.stiffness_factor=24 ;;
     q_e240) study q_e240 $fr --set scaling.stiffness_factor=240 ;;

@@ -30,12 +30,13 @@ from validation_report import FRONT_GAP_UM, ROOT, mean_sd, runs  # noqa: E402
 QUICK_FRONT_AFTER_S = 2.0
 # (step, knob value, label) per series; q_base is the setting the others move away from.
 SERIES = {
-    "overlap knob: scaling.stiffness_factor e": [("q_e7.5", 7.5), ("q_e24", 24), ("q_base", 75), ("q_e240", 240)],
+    "overlap knob: scaling.stiffness_factor e": [("q_e1", 1), ("q_e2.4", 2.4), ("q_e7.5", 7.5), ("q_e24", 24),
+                                                 ("q_base", 75), ("q_e240", 240)],
     "Stokes knob: k b at f = k/b = 9e3": [("q_b33", 1e7), ("q_base", 9e7), ("q_b316", 9e8)],
     "CB Young's modulus (GPa)": [("q_base", 142), ("q_ecb400", 400)],
     "time step": [("q_base", 1.0), ("q_dt_half", 0.5)],
 }
-STEPS = ["q_paper", "q_base", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_dt_half"]
+STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_dt_half"]
 
 
 def leaves_level(run_dir: Path, after_s: float):
