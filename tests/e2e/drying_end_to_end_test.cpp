@@ -21,7 +21,8 @@
 using namespace drydem;
 
 namespace {
-std::vector<std::vector<double>> read_csv(const std::filesystem::path& file, std::vector<std::string>& header) {
+std::vector<std::vector<double>> read_csv(const std::filesystem::path& file,
+                                          std::vector<std::string>& header) {
     std::ifstream in(file);
     std::string line;
     std::getline(in, line);
@@ -47,8 +48,8 @@ DryingResult run_quietly(const Config& c, const std::filesystem::path& dir) {
 
 TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     const Config c = load_config(default_config_toml(), "default",
-                                 {"run.name=e2e", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
-                                  "film.areal_loading=2.5mg/cm^2",
+                                 {"run.name=e2e", "run.threads=2", "film.box_x=36um",
+                                  "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
                                   "formulation.ncm_diameters=[\"3 um\"]", "drying.relaxation=1s",
                                   "output.snapshot_every=0", "output.timeseries_every=0.25s"});
     const FilmRecipe recipe = make_recipe(c);
@@ -68,7 +69,9 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     // follows it within about one CB diameter.
     std::vector<std::string> h;
     const auto rows = read_csv(dir / "timeseries.csv", h);
-    auto col = [&](const std::string& name) { return std::size_t(std::find(h.begin(), h.end(), name) - h.begin()); };
+    auto col = [&](const std::string& name) {
+        return std::size_t(std::find(h.begin(), h.end(), name) - h.begin());
+    };
     const std::size_t t_col = col("process_time_s"), level_col = col("liquid_level_um"),
                       p99_col = col("film_top_p99_um");
     ASSERT_LT(p99_col, h.size());
@@ -102,7 +105,8 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     ASSERT_TRUE(as.good());
     const nlohmann::json a = nlohmann::json::parse(as);
     EXPECT_NEAR(a["thickness_um"].get<double>(), r.relaxed_thickness * 1e6, 1e-6);
-    EXPECT_NEAR(a["areal_loading_mg_cm2"].get<double>(), summary["areal_loading_mg_cm2"].get<double>(),
+    EXPECT_NEAR(a["areal_loading_mg_cm2"].get<double>(),
+                summary["areal_loading_mg_cm2"].get<double>(),
                 2e-3 * summary["areal_loading_mg_cm2"].get<double>());
     EXPECT_LE(a["thickness_half_solid_um"].get<double>(), a["thickness_um"].get<double>());
     EXPECT_GT(a["voxel_porosity"].get<double>(), 0.1);
@@ -126,7 +130,8 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     EXPECT_TRUE(t["solver"]["converged"].get<bool>());
     EXPECT_EQ(t["convergence"].size(), c.analysis_transport_voxel_sizes.size());
     EXPECT_TRUE(t["skipped"].empty());
-    EXPECT_TRUE(std::isfinite(t["relative_change_from_coarser_voxels"]["tortuosity_through_plane"].get<double>()));
+    EXPECT_TRUE(std::isfinite(
+        t["relative_change_from_coarser_voxels"]["tortuosity_through_plane"].get<double>()));
     const nlohmann::json& b = a["binder_migration"];
     EXPECT_GT(b["bottom10_over_mean"].get<double>(), 0.0);
     EXPECT_NEAR(b["mass_balance"].get<double>(), 0.0, 1e-9);
@@ -146,19 +151,21 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
         EXPECT_GE(row[col("inertial_number")], 0.0);
     }
     ASSERT_EQ(summary["dimensionless_groups"]["zones"].size(), 2u);
-    EXPECT_GT(summary["dimensionless_groups"]["zones"][0]["simulated"]["push_number"].get<double>(), 0.0);
+    EXPECT_GT(summary["dimensionless_groups"]["zones"][0]["simulated"]["push_number"].get<double>(),
+              0.0);
 }
 
 // The force-ratio scheme through a run (docs/model.md M-7), on the same thin film for 3,000 steps
 // (a full drying costs ~10x the paper scheme's: docs/validation.md): the summary records the scheme,
 // the laws got the scaled values, and every force ratio of the simulated film is the process's.
 TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
-    const Config c = load_config(default_config_toml(), "default",
-                                 {"run.name=e2e-fr", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
-                                  "film.areal_loading=2.5mg/cm^2", "formulation.ncm_diameters=[\"3 um\"]",
-                                  "output.snapshot_every=0", "output.timeseries_every=0.01s", "scaling.scheme=\"force_ratio\"",
-                                  "scaling.time_factor=1e6", "scaling.viscosity_reduction=100",
-                                  "scaling.stiffness_factor=2"});
+    const Config c =
+        load_config(default_config_toml(), "default",
+                    {"run.name=e2e-fr", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
+                     "film.areal_loading=2.5mg/cm^2", "formulation.ncm_diameters=[\"3 um\"]",
+                     "output.snapshot_every=0", "output.timeseries_every=0.01s",
+                     "scaling.scheme=\"force_ratio\"", "scaling.time_factor=1e6",
+                     "scaling.viscosity_reduction=100", "scaling.stiffness_factor=2"});
     const auto dir = testing_support::temp_dir();
     RunOptions o;
     o.output_dir = dir;
@@ -176,9 +183,11 @@ TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
     EXPECT_NEAR(s["scaling"]["youngs_modulus_cb_Pa"]["scaled"].get<double>(), 2.84e11, 1.0);
     EXPECT_NEAR(s["scaling"]["lubrication_viscosity_Pa_s"].get<double>(), 0.01801, 1e-12);
     for (const auto& zone : s["dimensionless_groups"]["zones"])
-        for (const char* g : {"capillary_number_drag", "push_number", "vdw_over_capillary_cb_cb", "bond_number_largest_ncm"})
+        for (const char* g : {"capillary_number_drag", "push_number", "vdw_over_capillary_cb_cb",
+                              "bond_number_largest_ncm"})
             EXPECT_NEAR(zone["simulated"][g].get<double>(), zone["physical"][g].get<double>(),
-                        1e-9 * zone["physical"][g].get<double>()) << g;
+                        1e-9 * zone["physical"][g].get<double>())
+                << g;
     // The time series measures the level's load from the first row on.
     std::vector<std::string> h;
     const auto rows = read_csv(dir / "timeseries.csv", h);
@@ -193,17 +202,19 @@ TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
 // a diagnosis naming the particle and the cause, and keeps what it wrote: summary.json with
 // "failed", the time series so far and the particles at the failure.
 TEST(DryingEndToEnd, BlowUpStopsWithDiagnosisAndKeepsOutputs) {
-    const Config c = load_config(default_config_toml(), "default",
-                                 {"run.name=blowup", "run.threads=1", "run.time_step=5e-10s",
-                                  "numerics.stability_guard=\"warn\"", "numerics.integrator=\"explicit\"", "film.box_x=36um",
-                                  "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
-                                  "formulation.ncm_diameters=[\"3 um\"]", "output.snapshot_every=0"});
+    const Config c =
+        load_config(default_config_toml(), "default",
+                    {"run.name=blowup", "run.threads=1", "run.time_step=5e-10s",
+                     "numerics.stability_guard=\"warn\"", "numerics.integrator=\"explicit\"",
+                     "film.box_x=36um", "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
+                     "formulation.ncm_diameters=[\"3 um\"]", "output.snapshot_every=0"});
     const auto dir = testing_support::temp_dir();
     const DryingResult r = run_quietly(c, dir);
     ASSERT_FALSE(r.completed);
     EXPECT_NE(r.error.find("particle"), std::string::npos) << r.error;
     EXPECT_TRUE(r.error.find("non-finite") != std::string::npos ||
-                r.error.find("runaway overlap") != std::string::npos) << r.error;
+                r.error.find("runaway overlap") != std::string::npos)
+        << r.error;
     std::ifstream js(dir / "summary.json");
     const nlohmann::json summary = nlohmann::json::parse(js);
     EXPECT_EQ(summary["status"], "failed");
@@ -215,10 +226,11 @@ TEST(DryingEndToEnd, BlowUpStopsWithDiagnosisAndKeepsOutputs) {
 // A stop request (what Ctrl-C / SIGTERM send) ends the run after the current step with the
 // results so far written, like a failure; the flag is cleared afterwards for the other tests.
 TEST(DryingEndToEnd, StopRequestEndsTheRunAndKeepsOutputs) {
-    const Config c = load_config(default_config_toml(), "default",
-                                 {"run.name=stop", "run.threads=1", "film.box_x=36um",
-                                  "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
-                                  "formulation.ncm_diameters=[\"3 um\"]", "output.snapshot_every=0"});
+    const Config c =
+        load_config(default_config_toml(), "default",
+                    {"run.name=stop", "run.threads=1", "film.box_x=36um", "film.box_y=36um",
+                     "film.areal_loading=2.5mg/cm^2", "formulation.ncm_diameters=[\"3 um\"]",
+                     "output.snapshot_every=0"});
     const auto dir = testing_support::temp_dir();
     request_stop(2);
     const DryingResult r = run_quietly(c, dir);

@@ -14,8 +14,8 @@ namespace {
 constexpr double kLevelSpeed = 6.70; // scaled level speed [m/s]
 
 struct Riding {
-    double u;   ///< h_s / r = (z_L - z) / r at the end of the run
-    double v_z; ///< particle velocity [m/s]
+    double u;       ///< h_s / r = (z_L - z) / r at the end of the run
+    double v_z;     ///< particle velocity [m/s]
     double u_drift; ///< change of u over the last quarter of the run
 };
 
@@ -23,9 +23,9 @@ struct Riding {
 /// level descending at 6.70 m/s; runs `duration` (several relaxation times 2m/(6π(η/b)r), M-5).
 Riding ride(double r, double rho, double u0, double dt, double duration) {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.8); // no pair laws needed
-    ff.substrate_on = false;                              // free particle, far from any wall
-    ff.gravity = {9.81e6, 1030};                          // g k / b, NMP buoyancy (M-5, M-7)
-    ff.drag = {0.1801, true};                             // η / b with rotation (M-5, C-18)
+    ff.substrate_on = false;     // free particle, far from any wall
+    ff.gravity = {9.81e6, 1030}; // g k / b, NMP buoyancy (M-5, M-7)
+    ff.drag = {0.1801, true};    // η / b with rotation (M-5, C-18)
     ff.capillary = {0.041 * 9e3, 40.0 * std::numbers::pi / 180.0}; // σ s_cap, θ (M-6)
     const double z0 = 60e-6, level0 = z0 + u0 * r;
     ParticleStore p;

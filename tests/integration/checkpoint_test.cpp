@@ -28,8 +28,9 @@ struct Case {
 };
 
 Case thin_film() {
-    Config c = load_config("", "t", {"film.box_x=36um", "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
-                                     "formulation.ncm_diameters=[\"3 um\"]"});
+    Config c = load_config("", "t",
+                           {"film.box_x=36um", "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
+                            "formulation.ncm_diameters=[\"3 um\"]"});
     FilmRecipe r = make_recipe(c);
     ScaledParameters s = scale_parameters(c);
     LiquidLevelSchedule l{r.wet_film_height, s.level_speeds_scaled, s.zone_duration_scaled};
@@ -75,8 +76,9 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 TEST(Checkpoint, RestoredEngineContinuesBitForBit) {
     const Case k = thin_film();
     for (int threads : {1, 2}) {
-        Simulation a = make(k, insert_particles(k.recipe, Box{k.c.box_x, k.c.box_y},
-                                                k.recipe.wet_film_height, 5), threads);
+        Simulation a = make(
+            k, insert_particles(k.recipe, Box{k.c.box_x, k.c.box_y}, k.recipe.wet_film_height, 5),
+            threads);
         a.run(400); // past several rebuilds and a re-sort, contacts formed
         ASSERT_GT(a.neighbors().builds(), 2u);
         BinaryWriter w;

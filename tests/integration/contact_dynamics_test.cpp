@@ -86,7 +86,8 @@ TEST(EnergyConservation, ObliqueElasticCollision) {
         const auto& q = sim.particles();
         const double gap = norm(sim.box().minimum_image(q.position[0], q.position[1])) - 2 * r_cb;
         const double e_star = law<HertzMindlinLaw>(sim.forces().pair[0]).e_star;
-        const double elastic = gap < 0 ? 8.0 / 15.0 * e_star * std::sqrt(0.5 * r_cb) * std::pow(-gap, 2.5) : 0.0;
+        const double elastic =
+            gap < 0 ? 8.0 / 15.0 * e_star * std::sqrt(0.5 * r_cb) * std::pow(-gap, 2.5) : 0.0;
         max_dev = std::max(max_dev, std::abs(sim.kinetic_energy() + elastic - e0) / e0);
     }
     EXPECT_TRUE(touched);

@@ -81,7 +81,8 @@ TEST(ContactHistory, PeriodicBoundaryRebuildsAndSortsKeepHistory) {
     // Boundary: the contact point sits on x = 0 = L_x; sorted at every rebuild.
     Simulation boundary = make_pair({0.0, 20e-6, 20e-6}, {1e-11, 0.1e-6, 1, 1});
     // Scales: the van der Waals load, the Coulomb length μ F_n / S_t of the history.
-    const double s_t = 8 * law<HertzMindlinLaw>(interior.forces().pair[0]).g_star * std::sqrt(0.5 * kR * 6.9e-8);
+    const double s_t =
+        8 * law<HertzMindlinLaw>(interior.forces().pair[0]).g_star * std::sqrt(0.5 * kR * 6.9e-8);
     const double f_scale = kFvdw, h_scale = 0.8 * kFvdw / s_t;
     bool wrapped = false;
     double max_f = 0, max_h = 0, max_sep = 0, max_history = 0;

@@ -64,7 +64,8 @@ Exact measure(const Factory& make, const ParticleStore& p, double dt) {
         e.k.col(k) = -(forces(make, with_dof(p, k, v0, false), dt) - fv) / (v0 * dt);
         if (k % 6 < 3) // normal springs and van der Waals: displacements
             e.k.col(k) -= (forces(make, with_dof(p, k, x0, true), none) -
-                           forces(make, with_dof(p, k, -x0, true), none)) / (2 * x0);
+                           forces(make, with_dof(p, k, -x0, true), none)) /
+                          (2 * x0);
     }
     e.r = 0.5 * (e.r + e.r.transpose());
     e.k = 0.5 * (e.k + e.k.transpose());
@@ -113,7 +114,8 @@ TEST(GuardClusters, StiffnessRateIsTheExactLargestEigenvalueWithTheImplicitMass)
         const Exact e = measure(factory(c, r, k), k.particles, sim.settings().dt);
         Mat m_eff = e.m;
         const double dt = sim.settings().dt;
-        for (int i = 0; i < e.m.rows(); i += 6) m_eff.block(i, i, 6, 6) += dt * e.r.block(i, i, 6, 6);
+        for (int i = 0; i < e.m.rows(); i += 6)
+            m_eff.block(i, i, 6, 6) += dt * e.r.block(i, i, 6, 6);
         const double exact = std::sqrt(largest(e.k, m_eff));
         EXPECT_NEAR(estimate, exact, 0.03 * exact) << k.name;
     }
@@ -130,8 +132,9 @@ TEST(GuardClusters, ExplicitBoundExceedsThePerPairEstimate) {
     const Vec3 d = p.position[1] - p.position[0];
     const PairGeometry g = make_pair_geometry(d, norm(d), p.radius[0], p.radius[1], p.mass[0],
                                               p.mass[1], {}, {}, {}, {});
-    const PairResistance lub =
-        lubrication_resistance(g, law<LubricationLaw>(sim.forces().pair_params(p.species[0], p.species[1])));
-    const double per_pair = std::max(lub.normal, 3.5 * lub.sliding) * (p.inv_mass[1] + p.inv_mass[0]);
+    const PairResistance lub = lubrication_resistance(
+        g, law<LubricationLaw>(sim.forces().pair_params(p.species[0], p.species[1])));
+    const double per_pair =
+        std::max(lub.normal, 3.5 * lub.sliding) * (p.inv_mass[1] + p.inv_mass[0]);
     EXPECT_GT(sim.stability_estimate().damping_rate, 1.8 * per_pair);
 }

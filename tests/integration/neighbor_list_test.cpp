@@ -48,8 +48,8 @@ std::set<IdPair> brute_force_pairs(const Simulation& sim, double extra, int* acr
     for (std::size_t i = 0; i < p.size(); ++i)
         for (std::size_t j = i + 1; j < p.size(); ++j) {
             const PairParams& pp = sim.forces().pair_params(p.species[i], p.species[j]);
-            const double cut = p.radius[i] + p.radius[j] +
-                               interaction_range(pp, p.radius[i], p.radius[j]) + extra;
+            const double cut =
+                p.radius[i] + p.radius[j] + interaction_range(pp, p.radius[i], p.radius[j]) + extra;
             const Vec3 d = sim.box().minimum_image(p.position[i], p.position[j]);
             if (norm2(d) >= cut * cut) continue;
             const bool i_owns = NeighborList::owns(p.radius[i], p.id[i], p.radius[j], p.id[j]);
@@ -68,7 +68,8 @@ std::set<IdPair> listed_pairs(const Simulation& sim) {
         for (std::uint32_t s = nl.begin(i); s < nl.end(i); ++s) {
             const std::uint32_t j = nl.partner(s);
             EXPECT_TRUE(NeighborList::owns(p.radius[i], p.id[i], p.radius[j], p.id[j]));
-            EXPECT_TRUE(out.insert({p.id[i], p.id[j]}).second) << "duplicate " << p.id[i] << "-" << p.id[j];
+            EXPECT_TRUE(out.insert({p.id[i], p.id[j]}).second)
+                << "duplicate " << p.id[i] << "-" << p.id[j];
             // Never both orientations (each pair exactly once).
             EXPECT_EQ(out.count({p.id[j], p.id[i]}), 0u);
         }

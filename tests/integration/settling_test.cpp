@@ -34,7 +34,9 @@ Simulation lone_sphere(double r, double rho, double dt, const Vec3& omega0 = {})
 // V-9: v(t) = v_t (1 - exp(-t/τ)), v_t = 2 r² (ρ - ρ_f) g_s / (9 η/b), τ = m / (6π (η/b) r), with
 // the terminal velocities printed in M-5, within 1 % (Δt = τ/200).
 TEST(Settling, TerminalVelocityAndRelaxationV9) {
-    struct Case { double r, rho, v_t_printed; };
+    struct Case {
+        double r, rho, v_t_printed;
+    };
     const Case cases[] = {{0.75e-6, 1187.5, 1.072e-3}, {3.25e-6, 4740, 0.4743},
                           {3.79e-6, 4740, 0.6451},     {4.30e-6, 4740, 0.8303},
                           {4.91e-6, 4740, 1.0826},     {5.675e-6, 4740, 1.4463}};
@@ -111,9 +113,9 @@ TEST(Settling, PolydisperseGasSettlesIntoPackedBed) {
             min_z_over_r = std::min(min_z_over_r, p.position[i].z / p.radius[i]);
     }
     const ParticleStore& p = sim.particles();
-    ASSERT_EQ(p.size(), n); // particle count conserved
-    EXPECT_GT(min_z_over_r, 0.5);  // no centre through or near the substrate
-    EXPECT_LE(max_top, top0);      // none escaped upward
+    ASSERT_EQ(p.size(), n);       // particle count conserved
+    EXPECT_GT(min_z_over_r, 0.5); // no centre through or near the substrate
+    EXPECT_LE(max_top, top0);     // none escaped upward
     // At rest: translational energy dissipated by drag and contacts (what remains is free spin
     // about contact normals, which nothing resists with translational-only drag).
     EXPECT_LT(sim.kinetic_energy(), 1e-3 * ke_peak);
@@ -123,7 +125,8 @@ TEST(Settling, PolydisperseGasSettlesIntoPackedBed) {
     EXPECT_GT(solid_height / top, 0.35);
     EXPECT_LT(solid_height / top, 0.7);
     // Coordination (pair contacts counted at both ends, plus wall contacts) of a frictional bed.
-    const double coordination = (2.0 * sim.stats().contacts + sim.stats().wall_contacts) / double(n);
+    const double coordination =
+        (2.0 * sim.stats().contacts + sim.stats().wall_contacts) / double(n);
     EXPECT_GT(coordination, 3.0);
     EXPECT_GT(sim.stats().wall_contacts, 5u);
     EXPECT_LT(sim.stats().max_overlap_rel, 0.03); // E = 1e10 under the bed weight: ~1.2 %

@@ -35,7 +35,8 @@ ForceField all_models() {
 /// that no symmetry is exact.
 ParticleStore fcc_agglomerate() {
     const double a = std::sqrt(2.0) * (2.0 * kR - 0.069e-6); // cubic cell
-    const Vec3 basis[4] = {{0, 0, 0}, {0.5 * a, 0.5 * a, 0}, {0.5 * a, 0, 0.5 * a}, {0, 0.5 * a, 0.5 * a}};
+    const Vec3 basis[4] = {
+        {0, 0, 0}, {0.5 * a, 0.5 * a, 0}, {0.5 * a, 0, 0.5 * a}, {0, 0.5 * a, 0.5 * a}};
     Rng rng(5);
     ParticleStore p;
     std::uint32_t id = 1;
@@ -44,7 +45,8 @@ ParticleStore fcc_agglomerate() {
             for (int k = 0; k < 5; ++k)
                 for (const Vec3& b : basis) {
                     Vec3 x = Vec3{14e-6 + i * a, 14e-6 + j * a, kR - 2e-9 + k * a} + b;
-                    x += Vec3{rng.uniform(-2e-9, 2e-9), rng.uniform(-2e-9, 2e-9), rng.uniform(-2e-9, 2e-9)};
+                    x += Vec3{rng.uniform(-2e-9, 2e-9), rng.uniform(-2e-9, 2e-9),
+                              rng.uniform(-2e-9, 2e-9)};
                     p.add(id++, 5, kR, kRhoCb, x);
                 }
     return p;
@@ -98,7 +100,7 @@ TEST(Stability, DenseAgglomerateNoEnergyGrowthV14) {
     EXPECT_GT(sim.stats().max_overlap_rel, 0.08);
     EXPECT_LT(sim.stats().max_overlap_rel, 0.12);
     EXPECT_GT(min_z_over_r(sim.particles()), 0.99); // resting on the substrate
-    EXPECT_GE(sim.stats().wall_contacts, 40u);       // most of the 50 bottom spheres touch it
+    EXPECT_GE(sim.stats().wall_contacts, 40u);      // most of the 50 bottom spheres touch it
     EXPECT_LT(dt_lambda(sim), 2.0);
 }
 
@@ -163,14 +165,17 @@ namespace {
 // step, in units of its smaller radius (creep below 0.1 %).
 TEST(Stability, OverlapStopTellsASteadyLoadFromABlowUp) {
     EXPECT_NE(Simulation::overlap_cause(0.0).find("steady load"), std::string::npos);
-    EXPECT_NE(Simulation::overlap_cause(5e-5).find("steady load"), std::string::npos); // the 40 um creep
+    EXPECT_NE(Simulation::overlap_cause(5e-5).find("steady load"),
+              std::string::npos); // the 40 um creep
     EXPECT_NE(Simulation::overlap_cause(0.05).find("could not stop it"), std::string::npos);
-    EXPECT_NE(Simulation::overlap_cause(-0.05).find("could not stop it"), std::string::npos); // bouncing back
+    EXPECT_NE(Simulation::overlap_cause(-0.05).find("could not stop it"),
+              std::string::npos); // bouncing back
     const ForceField ff = uniform_contact_force_field(6, 1.42e11, 0.3, 0.5, 0.8);
     const auto stop_message = [&](double dt, double speed) {
         ParticleStore p;
         p.add(1, 5, kR, kRhoCb, {20e-6, 20e-6, 20e-6});
-        p.add(2, 5, kR, kRhoCb, {20e-6 + 2 * kR - 1.05 * kR, 20e-6, 20e-6}); // overlap 1.05 r > limit 1
+        p.add(2, 5, kR, kRhoCb,
+              {20e-6 + 2 * kR - 1.05 * kR, 20e-6, 20e-6}); // overlap 1.05 r > limit 1
         p.velocity[0] = {speed, 0.0, 0.0};
         p.velocity[1] = {-speed, 0.0, 0.0};
         Simulation sim(p, Box{40e-6, 40e-6}, ff, {dt, 0.1e-6, 1});

@@ -25,10 +25,10 @@ double hertz_overlap(double w, double e_star) {
 }
 
 struct PullResult {
-    double displacement;  ///< x - x_0 at the end [m]
-    double velocity;      ///< v_x at the end [m/s]
-    double velocity_mid;  ///< v_x half-way [m/s]
-    double history;       ///< ξ_x at the end [m]
+    double displacement;   ///< x - x_0 at the end [m]
+    double velocity;       ///< v_x at the end [m/s]
+    double velocity_mid;   ///< v_x half-way [m/s]
+    double history;        ///< ξ_x at the end [m]
     double max_slip_error; ///< max | |F_t| / (μ F_n) - 1 | over the sliding steps
     int sliding_steps;
 };
@@ -58,7 +58,8 @@ PullResult pull(double w, double p, int steps, double dt) {
         const double f_t = std::hypot(contact.x, contact.y);
         if (s_t * norm(xi) > (1.0 - 1e-9) * kMu * contact.z) {
             ++out.sliding_steps;
-            out.max_slip_error = std::max(out.max_slip_error, std::abs(f_t / (kMu * contact.z) - 1));
+            out.max_slip_error =
+                std::max(out.max_slip_error, std::abs(f_t / (kMu * contact.z) - 1));
         }
     }
     out.displacement = x.x;
@@ -73,7 +74,8 @@ PullResult pull(double w, double p, int steps, double dt) {
 TEST(SubstrateFriction, StickBelowCoulombLimitV3) {
     const double w = 1e-5, p = 0.5 * kMu * w, dt = 1e-11;
     const PullResult r = pull(w, p, 30000, dt);
-    const double s_t = 8.0 * aluminium().g_star * std::sqrt(kR * hertz_overlap(w, aluminium().e_star));
+    const double s_t =
+        8.0 * aluminium().g_star * std::sqrt(kR * hertz_overlap(w, aluminium().e_star));
     EXPECT_EQ(r.sliding_steps, 0);
     EXPECT_NEAR(r.displacement, p / s_t, 0.02 * p / s_t);
     EXPECT_NEAR(r.history, r.displacement, 1e-9 * r.displacement); // ξ = elastic displacement
@@ -91,7 +93,8 @@ TEST(SubstrateFriction, SlideAboveCoulombLimitV3) {
     const double dv = r.velocity - r.velocity_mid, a = (p - kMu * w) / kMass;
     EXPECT_NEAR(dv, a * 0.5 * steps * dt, 0.01 * a * 0.5 * steps * dt);
     // The spring is cut back to the Coulomb limit: ξ = μ F_n / S_t.
-    const double s_t = 8.0 * aluminium().g_star * std::sqrt(kR * hertz_overlap(w, aluminium().e_star));
+    const double s_t =
+        8.0 * aluminium().g_star * std::sqrt(kR * hertz_overlap(w, aluminium().e_star));
     EXPECT_NEAR(r.history, kMu * w / s_t, 1e-3 * kMu * w / s_t);
 }
 
@@ -114,7 +117,8 @@ TEST(SubstrateFriction, SlidingSphereStartsRollingAtFiveSevenths) {
     // The first steps load the spring (M-2.3 caps the spring, not the damping term: |F_t| may
     // exceed μ F_n there); from then on the contact slides on the Coulomb cone.
     sim.run(10);
-    const double t1 = sim.time(), v1 = sim.particles().velocity[0].x, w1 = sim.particles().omega[0].y;
+    const double t1 = sim.time(), v1 = sim.particles().velocity[0].x,
+                 w1 = sim.particles().omega[0].y;
     double max_slip_error = 0.0;
     while (sim.time() < 0.5 * t_roll) {
         sim.step();

@@ -81,13 +81,15 @@ namespace {
 /// Frames of the shrinkage at the given times: the solid fraction `solid(ξ)` (ξ = z/level) of a
 /// film holding the final film's solids, on slabs of h.dz up to the level.
 template <class Solid>
-std::vector<PorosityFrame> frames_of(const DryingHistory& h, std::initializer_list<double> times, Solid&& solid) {
+std::vector<PorosityFrame> frames_of(const DryingHistory& h, std::initializer_list<double> times,
+                                     Solid&& solid) {
     std::vector<PorosityFrame> out;
     for (double t : times) {
         const std::size_t k = std::size_t(std::lround(t / 0.1));
         PorosityFrame f{h.time[k], h.liquid_level[k], {}};
         const std::size_t slabs = std::size_t(std::ceil(f.height / h.dz - 1e-9));
-        for (std::size_t s = 0; s < slabs; ++s) f.porosity.push_back(1.0 - solid((s + 0.5) * h.dz / f.height, f.height));
+        for (std::size_t s = 0; s < slabs; ++s)
+            f.porosity.push_back(1.0 - solid((s + 0.5) * h.dz / f.height, f.height));
         out.push_back(std::move(f));
     }
     return out;
@@ -114,7 +116,8 @@ TEST(BinderMigration, ShrinkageFollowsTheRunsFrames) {
     EXPECT_EQ(b.porosity_frames, 4);
     EXPECT_LT(b.mass_balance, 1e-10);
     ASSERT_EQ(b.binder.size(), a.binder.size());
-    for (std::size_t i = 0; i < a.binder.size(); ++i) EXPECT_NEAR(b.binder[i], a.binder[i], 1e-9) << i;
+    for (std::size_t i = 0; i < a.binder.size(); ++i)
+        EXPECT_NEAR(b.binder[i], a.binder[i], 1e-9) << i;
 
     DryingHistory skin = affine;
     // Solids twice as dense in the upper half of the wet film as in the lower (same volume).
@@ -125,7 +128,8 @@ TEST(BinderMigration, ShrinkageFollowsTheRunsFrames) {
     EXPECT_EQ(c.porosity_frames, 4);
     EXPECT_LT(c.mass_balance, 1e-10);
     double diff = 0.0;
-    for (std::size_t i = 0; i < a.binder.size(); ++i) diff = std::max(diff, std::abs(c.binder[i] - a.binder[i]));
+    for (std::size_t i = 0; i < a.binder.size(); ++i)
+        diff = std::max(diff, std::abs(c.binder[i] - a.binder[i]));
     EXPECT_GT(diff, 1e-3);
     // Frames after the level reached H_f (or at it) do not count: the pore emptying uses ε_f.
     DryingHistory late = affine;

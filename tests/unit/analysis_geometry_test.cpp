@@ -56,11 +56,13 @@ Structure fcc(int n, int m, double r) {
 
 TEST(SphereSlab, WholeHalfAndCapVolumes) {
     const double r = 2.0e-6, zc = 5.0e-6;
-    EXPECT_NEAR(sphere_slab_volume(zc, r, 0.0, 10e-6), 4.0 / 3.0 * pi * r * r * r, 1e-12 * r * r * r);
+    EXPECT_NEAR(sphere_slab_volume(zc, r, 0.0, 10e-6), 4.0 / 3.0 * pi * r * r * r,
+                1e-12 * r * r * r);
     EXPECT_NEAR(sphere_slab_volume(zc, r, 0.0, zc), 2.0 / 3.0 * pi * r * r * r, 1e-12 * r * r * r);
     // Cap of height h: π h² (3r - h) / 3.
     const double h = 0.7e-6;
-    EXPECT_NEAR(sphere_slab_volume(zc, r, zc + r - h, 20e-6), pi * h * h * (3 * r - h) / 3.0, 1e-12 * r * r * r);
+    EXPECT_NEAR(sphere_slab_volume(zc, r, zc + r - h, 20e-6), pi * h * h * (3 * r - h) / 3.0,
+                1e-12 * r * r * r);
     EXPECT_EQ(sphere_slab_volume(zc, r, 8e-6, 9e-6), 0.0);
 }
 
@@ -98,7 +100,8 @@ TEST(Profiles, SimpleCubicLayersArePiOverSix) {
     }
     // Slabs cutting the spheres in halves: the mean over a period is still π/6.
     const Profiles q = volume_fraction_profiles(s, r, highest_top(s));
-    for (std::size_t k = 0; k + 1 < q.size(); k += 2) EXPECT_NEAR(0.5 * (q.ncm[k] + q.ncm[k + 1]), pi / 6.0, 1e-12);
+    for (std::size_t k = 0; k + 1 < q.size(); k += 2)
+        EXPECT_NEAR(0.5 * (q.ncm[k] + q.ncm[k + 1]), pi / 6.0, 1e-12);
 }
 
 TEST(Profiles, FccInteriorIsClosePacked) {
@@ -106,7 +109,8 @@ TEST(Profiles, FccInteriorIsClosePacked) {
     const Structure s = fcc(3, 6, r);
     // An interior slab one cell high: every sphere it cuts is balanced by its periodic partner.
     const Profiles p = volume_fraction_profiles(s, a, highest_top(s));
-    for (std::size_t k = 1; k + 2 < p.size(); ++k) EXPECT_NEAR(p.cb_envelope[k], pi / (3.0 * std::sqrt(2.0)), 1e-12);
+    for (std::size_t k = 1; k + 2 < p.size(); ++k)
+        EXPECT_NEAR(p.cb_envelope[k], pi / (3.0 * std::sqrt(2.0)), 1e-12);
     // Carbon only: (1 - ε_CB) of the envelope.
     EXPECT_NEAR(p.cb_carbon[2], 0.25 * p.cb_envelope[2], 1e-15);
 }
@@ -150,12 +154,14 @@ TEST(Bulk, CbBinderPorosityEq2IsIndependentOfTheThickness) {
     const Profiles p = volume_fraction_profiles(s, 0.5e-6, highest_top(s));
     const Bulk b = bulk_properties(s, p.solid(), 0.5e-6);
     const double expected =
-        (b.mass.ncm_volume + b.mass.cb_envelope_volume - b.mass.dry() / b.solids_density) / b.mass.cb_envelope_volume;
+        (b.mass.ncm_volume + b.mass.cb_envelope_volume - b.mass.dry() / b.solids_density) /
+        b.mass.cb_envelope_volume;
     EXPECT_NEAR(b.cb_binder_porosity, expected, 1e-9);
     // Same structure 5 um higher up: a thicker coating, the same ε_CB.
     Structure lifted = s;
     for (auto& x : lifted.position) x.z += 5e-6;
-    const Bulk b2 = bulk_properties(lifted, volume_fraction_profiles(lifted, 0.5e-6, highest_top(lifted)).solid(), 0.5e-6);
+    const Bulk b2 = bulk_properties(
+        lifted, volume_fraction_profiles(lifted, 0.5e-6, highest_top(lifted)).solid(), 0.5e-6);
     EXPECT_NEAR(b2.cb_binder_porosity, b.cb_binder_porosity, 1e-9);
     EXPECT_GT(b2.porosity, b.porosity);
 }
@@ -164,7 +170,8 @@ TEST(Coordination, SimpleCubicHasSixNeighbours) {
     const Structure s = simple_cubic(4, 4, 1.0e-6);
     const Coordination c = coordination(s, 1e-12);
     // Periodic in x, y: every sphere has 4 in its layer, 1 or 2 between layers.
-    EXPECT_EQ(c.ncm_ncm, 16u * 2u * 4u + 16u * 3u); // in-layer bonds (2 per sphere) + bonds between 4 layers
+    EXPECT_EQ(c.ncm_ncm,
+              16u * 2u * 4u + 16u * 3u); // in-layer bonds (2 per sphere) + bonds between 4 layers
     EXPECT_EQ(c.ncm_substrate, 16u);
     EXPECT_NEAR(c.ncm_with_ncm(), (16 * 2 * 4 + 16 * 3) * 2.0 / 64.0, 1e-12);
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -192,7 +199,8 @@ TEST(Coordination, FccHasTwelveAndPairTypesAreCounted) {
     EXPECT_EQ(c.ncm_ncm + c.ncm_cb, 0u);
     // An NCM sphere resting on top of the lattice touching one CB sphere: one NCM-CB contact.
     const double rn = 3.0e-6;
-    s.add({s.position.back().x, s.position.back().y, s.position.back().z + 0.75e-6 + rn}, rn, Phase::ncm, 4740.0);
+    s.add({s.position.back().x, s.position.back().y, s.position.back().z + 0.75e-6 + rn}, rn,
+          Phase::ncm, 4740.0);
     const Coordination c2 = coordination(s, 1e-12);
     EXPECT_GE(c2.ncm_cb, 1u);
     EXPECT_NEAR(c2.cb_with_ncm() * double(c2.n_cb), double(c2.ncm_cb), 1e-9);
@@ -244,7 +252,8 @@ TEST(AnalysisInput, CsvAndLammpsDumpGiveTheSameStructure) {
     ParticleStore p;
     p.add(1, 0, 3.25e-6, 4740.0, {5e-6, 5e-6, 3.3e-6});
     p.add(2, 4, 5.675e-6, 4740.0, {14e-6, 12e-6, 5.7e-6});
-    for (int i = 0; i < 20; ++i) p.add(std::uint32_t(3 + i), 5, 0.75e-6, 1190.0, {1e-6 * i, 19.5e-6, 0.8e-6 + 0.1e-6 * i});
+    for (int i = 0; i < 20; ++i)
+        p.add(std::uint32_t(3 + i), 5, 0.75e-6, 1190.0, {1e-6 * i, 19.5e-6, 0.8e-6 + 0.1e-6 * i});
     write_particles_csv(dir / "final.csv", p);
     {
         std::ofstream dump(dir / "dump.lammpstrj");
@@ -253,7 +262,8 @@ TEST(AnalysisInput, CsvAndLammpsDumpGiveTheSameStructure) {
         append_lammps_dump(dump, p, box, 100, 12e-6);
     }
     const Structure a = structure_from_file(read_particles(dir / "final.csv"), file_defaults(c));
-    const Structure b = structure_from_file(read_particles(dir / "dump.lammpstrj"), file_defaults(c));
+    const Structure b =
+        structure_from_file(read_particles(dir / "dump.lammpstrj"), file_defaults(c));
     ASSERT_EQ(a.size(), 22u);
     ASSERT_EQ(b.size(), 22u);
     EXPECT_DOUBLE_EQ(b.box.lx, 20e-6);
@@ -268,14 +278,17 @@ TEST(AnalysisInput, CsvAndLammpsDumpGiveTheSameStructure) {
     const Masses ma = masses(a), mb = masses(b);
     EXPECT_NEAR(ma.dry(), mb.dry(), 1e-9 * ma.dry());
     // CB carbon: (1 - ε_CB) ρ_CB of the envelope, not the file's effective density.
-    EXPECT_NEAR(ma.cb_carbon, 20 * 0.25 * 1660.0 * 4.0 / 3.0 * pi * std::pow(0.75e-6, 3), 1e-9 * ma.cb_carbon);
+    EXPECT_NEAR(ma.cb_carbon, 20 * 0.25 * 1660.0 * 4.0 / 3.0 * pi * std::pow(0.75e-6, 3),
+                1e-9 * ma.cb_carbon);
     // Type 7 is not in a 5-class config; --cb-type makes it CB and every other type NCM.
     p.add(99, 6, 1e-6, 1000.0, {1e-6, 1e-6, 1e-6});
     write_particles_csv(dir / "bad.csv", p);
-    EXPECT_THROW((void)structure_from_file(read_particles(dir / "bad.csv"), file_defaults(c)), InputError);
+    EXPECT_THROW((void)structure_from_file(read_particles(dir / "bad.csv"), file_defaults(c)),
+                 InputError);
     PhaseRule rule;
     rule.cb_type = 7;
-    const Structure d = structure_from_file(read_particles(dir / "bad.csv"), file_defaults(c), rule);
+    const Structure d =
+        structure_from_file(read_particles(dir / "bad.csv"), file_defaults(c), rule);
     std::size_t cb7 = 0;
     for (auto ph : d.phase) cb7 += ph == Phase::cb;
     EXPECT_EQ(cb7, 1u);

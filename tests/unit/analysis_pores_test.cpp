@@ -117,8 +117,10 @@ TEST(Chords, BooleanModelIsExponentialWithTheClosedFormMean) {
     for (int axis = 0; axis < 2; ++axis) {
         const auto& c = h[std::size_t(axis)];
         const double mean = c.mean_voxels() * a;
-        std::printf("axis %d: %llu chords, mean %.4f um; 1/(lambda pi R^2) %.4f um, 4R/(3(-ln eps)) %.4f um\n", axis,
-                    (unsigned long long)c.chords(), mean * 1e6, mean_lambda * 1e6, mean_eps * 1e6);
+        std::printf("axis %d: %llu chords, mean %.4f um; 1/(lambda pi R^2) %.4f um, 4R/(3(-ln "
+                    "eps)) %.4f um\n",
+                    axis, (unsigned long long)c.chords(), mean * 1e6, mean_lambda * 1e6,
+                    mean_eps * 1e6);
         EXPECT_NEAR(mean / mean_eps, 1.0, 0.03) << "axis " << axis;
         EXPECT_NEAR(mean / mean_lambda, 1.0, 0.03) << "axis " << axis;
         // Exponential shape: the share of chords longer than one and two means.
@@ -193,9 +195,9 @@ TEST(MercuryIntrusion, BodyBehindAThroatFillsAtTheThroatSize) {
                     if (dx * dx + dy * dy < 0.25 * D * D) g.label[g.index(i, j, k)] = label_pore;
                 }
     };
-    carve(12, 20, 16, 0, 20);  // body
-    carve(12, 20, 6, 20, 40);  // throat to the top
-    carve(31, 20, 12, 3, 19);  // closed pore
+    carve(12, 20, 16, 0, 20); // body
+    carve(12, 20, 6, 20, 40); // throat to the top
+    carve(31, 20, 12, 3, 19); // closed pore
     const auto d2 = squared_distance_to_solid(g);
     const auto lt = local_thickness(g, d2);
     const auto mip = intrusion_map(g, invasion_levels(g, d2));
@@ -267,7 +269,8 @@ TEST(Analyze, PipelineOnABooleanFilm) {
         (void)analyze_structure(s, tiny);
         ADD_FAILURE() << "no error for a 1e12-voxel image";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("choose a coarser voxel size"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("choose a coarser voxel size"), std::string::npos)
+            << e.what();
     }
 }
 
@@ -276,31 +279,31 @@ TEST(LocalThickness, PaintedBallsEqualBruteForceAcrossSeamsAndLayers) {
     // periodic: the pruned centres, the unwrapped interior test and the seams' wrapped test must
     // all agree with painting every centre. Boolean pores on a grid small enough for brute force.
     for (const std::uint64_t seed : {11u, 12u, 13u, 14u}) {
-    const Structure s = boolean_model(2.0e-6, 1.6e-6, 0.3e-6, 0.7, seed);
-    const VoxelGrid g = voxelize(s, 0.1e-6, 1.6e-6);
-    ASSERT_EQ(g.nx, 20);
-    const auto d2 = squared_distance_to_solid(g);
-    const auto lt = local_thickness(g, d2);
-    std::size_t mismatches = 0, painted = 0;
-    for (int k = 0; k < g.nz; ++k)
-        for (int j = 0; j < g.ny; ++j)
-            for (int i = 0; i < g.nx; ++i) {
-                std::uint16_t best = 0;
-                for (int kc = 0; kc < g.nz; ++kc)
-                    for (int jc = 0; jc < g.ny; ++jc)
-                        for (int ic = 0; ic < g.nx; ++ic) {
-                            const std::uint16_t v = d2[g.index(ic, jc, kc)];
-                            if (v <= best) continue;
-                            int di = std::abs(i - ic), dj = std::abs(j - jc);
-                            di = std::min(di, g.nx - di);
-                            dj = std::min(dj, g.ny - dj);
-                            if (di * di + dj * dj + (k - kc) * (k - kc) < int(v)) best = v;
-                        }
-                painted += best > 0;
-                mismatches += lt[g.index(i, j, k)] != best;
-            }
-    EXPECT_EQ(mismatches, 0u) << "seed " << seed;
-    EXPECT_GT(painted, g.size() / 2); // the test paints a real pore space
+        const Structure s = boolean_model(2.0e-6, 1.6e-6, 0.3e-6, 0.7, seed);
+        const VoxelGrid g = voxelize(s, 0.1e-6, 1.6e-6);
+        ASSERT_EQ(g.nx, 20);
+        const auto d2 = squared_distance_to_solid(g);
+        const auto lt = local_thickness(g, d2);
+        std::size_t mismatches = 0, painted = 0;
+        for (int k = 0; k < g.nz; ++k)
+            for (int j = 0; j < g.ny; ++j)
+                for (int i = 0; i < g.nx; ++i) {
+                    std::uint16_t best = 0;
+                    for (int kc = 0; kc < g.nz; ++kc)
+                        for (int jc = 0; jc < g.ny; ++jc)
+                            for (int ic = 0; ic < g.nx; ++ic) {
+                                const std::uint16_t v = d2[g.index(ic, jc, kc)];
+                                if (v <= best) continue;
+                                int di = std::abs(i - ic), dj = std::abs(j - jc);
+                                di = std::min(di, g.nx - di);
+                                dj = std::min(dj, g.ny - dj);
+                                if (di * di + dj * dj + (k - kc) * (k - kc) < int(v)) best = v;
+                            }
+                    painted += best > 0;
+                    mismatches += lt[g.index(i, j, k)] != best;
+                }
+        EXPECT_EQ(mismatches, 0u) << "seed " << seed;
+        EXPECT_GT(painted, g.size() / 2); // the test paints a real pore space
     }
 }
 

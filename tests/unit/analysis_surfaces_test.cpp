@@ -44,7 +44,8 @@ TEST(Surfaces, OverlappingNcmSpheresShareTheirCaps) {
     s.add({5e-6, 10e-6, 8e-6}, 4e-6, Phase::ncm, 4740);
     s.add({11e-6, 10e-6, 8e-6}, 3e-6, Phase::ncm, 4740);
     const Surfaces a = ncm_surfaces(s, {4000, 0.0});
-    const double expect = 4 * pi * 16e-12 * cap_fraction(4, 3, 6) + 4 * pi * 9e-12 * cap_fraction(3, 4, 6);
+    const double expect =
+        4 * pi * 16e-12 * cap_fraction(4, 3, 6) + 4 * pi * 9e-12 * cap_fraction(3, 4, 6);
     EXPECT_NEAR(a.ncm_contact / expect, 1.0, 1e-2);
     EXPECT_NEAR(a.electrolyte + a.ncm_contact, a.total, 1e-20);
 }

@@ -60,7 +60,8 @@ TEST(Conduction, StraightCylindricalPoresHaveTortuosityOne) {
     for (int k = 0; k < p.nz; ++k)
         for (int j = 0; j < p.ny; ++j)
             for (int i = 0; i < p.nx; ++i) {
-                const double dx = std::fmod(i + 0.5, 12.0) - 6.0, dy = std::fmod(j + 0.5, 12.0) - 6.0;
+                const double dx = std::fmod(i + 0.5, 12.0) - 6.0,
+                             dy = std::fmod(j + 0.5, 12.0) - 6.0;
                 if (dx * dx + dy * dy < 16.0) at(p, i, j, k) = 1.0f;
             }
     const double eps = fraction(p);
@@ -131,7 +132,8 @@ TEST(Conduction, MultigridAndJacobiAgreeOnAHighContrastMediumWithInsulatingVoxel
         std::mt19937 rng(11);
         std::discrete_distribution<int> phase({0.3, 0.5, 0.2});
         ConductionProblem p = uniform(n, n, n, 1.0f);
-        for (float& s : p.sigma) s = std::array<float, 3>{0.0f, 1e-2f, 1e2f}[std::size_t(phase(rng))];
+        for (float& s : p.sigma)
+            s = std::array<float, 3>{0.0f, 1e-2f, 1e2f}[std::size_t(phase(rng))];
         const ConductionResult amg = solve_conduction(p);
         p.preconditioner = Preconditioner::jacobi;
         const ConductionResult jacobi = solve_conduction(p);
@@ -271,7 +273,8 @@ TEST(RandomWalk, FreeSpaceDiffusesAtD0AndChannelsOnlyAlongTheirAxis) {
     ConductionProblem free = uniform(16, 16, 16, 1.0f);
     free.periodic = {true, true, true};
     const RandomWalkResult f = random_walk(free, 4000, 4000);
-    for (int d = 0; d < 3; ++d) EXPECT_NEAR(f.diffusivity[std::size_t(d)], 1.0, 4.0 * f.standard_error[std::size_t(d)]);
+    for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(f.diffusivity[std::size_t(d)], 1.0, 4.0 * f.standard_error[std::size_t(d)]);
     EXPECT_LT(f.standard_error[0], 0.04);
     // Straight channels of radius 4 voxels along z (periodic z): every z step is taken, D_z = D₀;
     // across, the walkers stay in their channel: ⟨Δx²⟩ bounded by the channel, D_x → 0.
@@ -280,7 +283,8 @@ TEST(RandomWalk, FreeSpaceDiffusesAtD0AndChannelsOnlyAlongTheirAxis) {
     for (int k = 0; k < p.nz; ++k)
         for (int j = 0; j < p.ny; ++j)
             for (int i = 0; i < p.nx; ++i) {
-                const double dx = std::fmod(i + 0.5, 12.0) - 6.0, dy = std::fmod(j + 0.5, 12.0) - 6.0;
+                const double dx = std::fmod(i + 0.5, 12.0) - 6.0,
+                             dy = std::fmod(j + 0.5, 12.0) - 6.0;
                 if (dx * dx + dy * dy < 16.0) at(p, i, j, k) = 1.0f;
             }
     const RandomWalkResult c = random_walk(p, 4000, 6000);
@@ -304,7 +308,8 @@ TEST(RandomWalk, AgreesWithTheConductionSolveOnARandomPoreSpace) {
     const double tau_walk = 1.0 / w.diffusivity[0];
     const double err = w.standard_error[0] / (w.diffusivity[0] * w.diffusivity[0]);
     EXPECT_GT(tau_solve, 1.3); // a real detour, not the trivial case
-    EXPECT_NEAR(tau_walk / tau_solve, 1.0, 0.03 + 3.0 * err / tau_solve) << tau_walk << " " << tau_solve;
+    EXPECT_NEAR(tau_walk / tau_solve, 1.0, 0.03 + 3.0 * err / tau_solve)
+        << tau_walk << " " << tau_solve;
 }
 
 TEST(Transport, ExtrapolationToZeroVoxelRecoversAPowerLaw) {
@@ -357,7 +362,8 @@ TEST(Transport, WindowCarriesTheSameCurrentThroughItsSmallerArea) {
             (void)film_transport(s, 6e-6, o);
             ADD_FAILURE() << "no error for a window of " << bad;
         } catch (const InputError& e) {
-            EXPECT_NE(std::string(e.what()).find("analysis.transport_window"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("analysis.transport_window"), std::string::npos)
+                << e.what();
         }
     }
 }

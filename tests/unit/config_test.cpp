@@ -50,7 +50,8 @@ TEST(Config, EmbeddedDefaultEqualsConfigDefaultsBitForBit) {
                 } else if constexpr (std::is_same_v<T, std::vector<double>>) {
                     ASSERT_EQ((parsed.*member).size(), (defaults.*member).size()) << f.key;
                     for (std::size_t i = 0; i < (defaults.*member).size(); ++i)
-                        EXPECT_EQ(bits((parsed.*member)[i]), bits((defaults.*member)[i])) << f.key << "[" << i << "]";
+                        EXPECT_EQ(bits((parsed.*member)[i]), bits((defaults.*member)[i]))
+                            << f.key << "[" << i << "]";
                 } else {
                     EXPECT_EQ(parsed.*member, defaults.*member) << f.key;
                 }
@@ -83,13 +84,15 @@ TEST(Config, EveryKeyIsDeclaredOnceInItsSection) {
 
 // docs/configuration.md is `drydem config doc`: the key reference cannot drift from the schema.
 TEST(Config, KeyReferenceDocIsGeneratedFromTheSchema) {
-    const std::filesystem::path doc = std::filesystem::path(DRYDEM_SOURCE_DIR) / "docs" / "configuration.md";
+    const std::filesystem::path doc =
+        std::filesystem::path(DRYDEM_SOURCE_DIR) / "docs" / "configuration.md";
     std::ifstream in(doc);
     ASSERT_TRUE(in) << doc;
     std::stringstream text;
     text << in.rdbuf();
     EXPECT_EQ(text.str(), config_reference_markdown())
-        << "docs/configuration.md differs from the schema (src/drydem/io/config_keys.def); regenerate it: "
+        << "docs/configuration.md differs from the schema (src/drydem/io/config_keys.def); "
+           "regenerate it: "
            "build/drydem config doc > docs/configuration.md";
     for (const config_schema::Field& f : config_schema::schema().fields)
         EXPECT_NE(text.str().find(fmt::format("| `{}` |", f.key)), std::string::npos) << f.key;
@@ -100,7 +103,8 @@ TEST(Config, SiUnitOfEveryDimensionReadsBack) {
     for (int d = int(Dimension::length); d <= int(Dimension::diffusivity); ++d) {
         const auto dim = Dimension(d);
         ASSERT_FALSE(si_unit(dim).empty()) << dimension_name(dim);
-        EXPECT_EQ(parse_quantity(fmt::format("1 {}", si_unit(dim)), dim, "test"), 1.0) << si_unit(dim);
+        EXPECT_EQ(parse_quantity(fmt::format("1 {}", si_unit(dim)), dim, "test"), 1.0)
+            << si_unit(dim);
     }
     EXPECT_EQ(si_unit(Dimension::dimensionless), "");
 }
@@ -112,7 +116,8 @@ TEST(Config, ConductivityAndDiffusivityHaveUnits) {
     EXPECT_DOUBLE_EQ(parse_quantity("2 S/m", Dimension::electrical_conductivity, "k"), 2.0);
     EXPECT_DOUBLE_EQ(parse_quantity("1 cm^2/s", Dimension::diffusivity, "k"), 1e-4);
     const Config c = load_config("[analysis]\nncm_conductivity = \"10 mS/m\"\n"
-                                 "binder_diffusivity = \"6.5 um^2/s\"\n", "t", {});
+                                 "binder_diffusivity = \"6.5 um^2/s\"\n",
+                                 "t", {});
     EXPECT_DOUBLE_EQ(c.analysis_ncm_conductivity, 1e-2);
     EXPECT_DOUBLE_EQ(c.analysis_binder_diffusivity, 6.5e-12);
     const std::string msg = input_error("[analysis]\ncb_conductivity = \"100 s/m\"\n");
@@ -135,11 +140,16 @@ TEST(Config, EveryExampleParses) {
 // The four paper loadings (M-8.1, paper Table 2) and the C-12 sensitivity case.
 TEST(Config, PaperExamplesCarryTable2Rates) {
     const std::filesystem::path dir = std::filesystem::path(DRYDEM_SOURCE_DIR) / "examples";
-    struct Case { const char* file; double loading, s1, s2; const char* name; };
-    for (const Case& k : {Case{"paper_20.1.toml", 0.201, 0.670e-6, 1.193e-6, "lippke2022-20.1mgcm2"},
-                          Case{"paper_25.2.toml", 0.252, 0.683e-6, 1.323e-6, "lippke2022-25.2mgcm2"},
-                          Case{"paper_30.3.toml", 0.303, 0.667e-6, 1.360e-6, "lippke2022-30.3mgcm2"},
-                          Case{"paper_35.4.toml", 0.354, 0.650e-6, 1.383e-6, "lippke2022-35.4mgcm2"}}) {
+    struct Case {
+        const char* file;
+        double loading, s1, s2;
+        const char* name;
+    };
+    for (const Case& k :
+         {Case{"paper_20.1.toml", 0.201, 0.670e-6, 1.193e-6, "lippke2022-20.1mgcm2"},
+          Case{"paper_25.2.toml", 0.252, 0.683e-6, 1.323e-6, "lippke2022-25.2mgcm2"},
+          Case{"paper_30.3.toml", 0.303, 0.667e-6, 1.360e-6, "lippke2022-30.3mgcm2"},
+          Case{"paper_35.4.toml", 0.354, 0.650e-6, 1.383e-6, "lippke2022-35.4mgcm2"}}) {
         const Config c = load_config_file((dir / k.file).string());
         EXPECT_EQ(c.name, k.name);
         EXPECT_NEAR(c.areal_loading, k.loading, 1e-12);
@@ -186,8 +196,9 @@ TEST(Config, OutOfRangeIsRejected) {
 }
 
 TEST(Config, SetOverridesApply) {
-    const Config c = load_config(default_config_toml(), "default",
-                                 {"run.seed=7", "film.areal_loading=\"5 mg/cm^2\"", "film.box_x=50um"});
+    const Config c =
+        load_config(default_config_toml(), "default",
+                    {"run.seed=7", "film.areal_loading=\"5 mg/cm^2\"", "film.box_x=50um"});
     EXPECT_EQ(c.seed, 7u);
     EXPECT_NEAR(c.areal_loading, 0.05, 1e-15); // 5 mg/cm2 = 0.05 kg/m2
     EXPECT_NEAR(c.box_x, 50e-6, 1e-18);
@@ -199,16 +210,19 @@ TEST(Config, MassFractionsMustSumToOne) {
     const std::string msg = input_error("[formulation]\nncm_mass_fraction = 0.90\n");
     EXPECT_NE(msg.find("mass_fraction"), std::string::npos) << msg;
     EXPECT_NE(msg.find("sum to 1"), std::string::npos) << msg;
-    EXPECT_NO_THROW(load_config("[formulation]\nncm_mass_fraction = 0.90\npvdf_mass_fraction = 0.05\n"
-                                "cb_mass_fraction = 0.05\n", "t"));
+    EXPECT_NO_THROW(
+        load_config("[formulation]\nncm_mass_fraction = 0.90\npvdf_mass_fraction = 0.05\n"
+                    "cb_mass_fraction = 0.05\n",
+                    "t"));
 }
 
 // The resolved config written into each output folder reads back to the same configuration.
 TEST(Config, ToTomlRoundTrip) {
-    Config c = load_config(default_config_toml(), "default",
-                           {"run.seed=99", "film.box_x=\"41.3 um\"", "materials.contact_angle=\"33 deg\"",
-                            "lubrication.uses_reduced_viscosity=true", "numerics.stability_guard=\"warn\"",
-                            "dryer.shrinkage_rates=[\"0.7 um/s\", \"1.1 um/s\", \"0.4 um/s\"]"});
+    Config c =
+        load_config(default_config_toml(), "default",
+                    {"run.seed=99", "film.box_x=\"41.3 um\"", "materials.contact_angle=\"33 deg\"",
+                     "lubrication.uses_reduced_viscosity=true", "numerics.stability_guard=\"warn\"",
+                     "dryer.shrinkage_rates=[\"0.7 um/s\", \"1.1 um/s\", \"0.4 um/s\"]"});
     const std::string text = to_toml(c);
     const Config back = load_config(text, "resolved.toml");
     EXPECT_EQ(to_toml(back), text);
@@ -224,13 +238,13 @@ TEST(Config, ToTomlRoundTrip) {
 // spheres d + r_L = 1.5 d (M-4.1), so 2 (17.025 + 0.3) um = 34.65 um with the semi-implicit skin; 20 um spheres need 60.6 um.
 TEST(Config, BoxMustHoldTwiceTheLargestInteractionRange) {
     EXPECT_NO_THROW(load_config("", "t", {"film.box_x=36um", "film.box_y=36um"}));
-    const std::string msg = input_error("", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=50um",
-                                             "film.box_y=80um"});
+    const std::string msg = input_error(
+        "", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=50um", "film.box_y=80um"});
     EXPECT_NE(msg.find("film.box_x"), std::string::npos) << msg;
     EXPECT_NE(msg.find("50 um"), std::string::npos) << msg;
     EXPECT_NE(msg.find("60.6"), std::string::npos) << msg;
-    EXPECT_NO_THROW(load_config("", "t", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=61um",
-                                          "film.box_y=61um"}));
+    EXPECT_NO_THROW(load_config(
+        "", "t", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=61um", "film.box_y=61um"}));
 }
 
 // The reach is the pair laws' (interaction_range), not a fixed 1.5 d: a van der Waals cutoff of
@@ -249,24 +263,28 @@ TEST(Config, NegativeOrZeroDiameterIsRejected) {
     const std::string msg = input_error("", {"formulation.ncm_diameters=[\"-3 um\"]"});
     EXPECT_NE(msg.find("formulation.ncm_diameters"), std::string::npos) << msg;
     EXPECT_NE(msg.find("out of range"), std::string::npos) << msg;
-    EXPECT_NE(input_error("", {"formulation.cb_diameter=0"}).find("formulation.cb_diameter"), std::string::npos);
+    EXPECT_NE(input_error("", {"formulation.cb_diameter=0"}).find("formulation.cb_diameter"),
+              std::string::npos);
 }
 
 TEST(Config, StudyMeasuredValuesNeedOnePerMeasuredLoading) {
-    const Config ok = load_config("[study]\nloadings = [\"20.1 mg/cm^2\", \"25.2 mg/cm^2\"]\nseeds = 2\n"
-                                  "measured_loadings = [\"20.1 mg/cm^2\"]\nmeasured_thickness = [\"84 um\"]\n",
-                                  "t");
+    const Config ok =
+        load_config("[study]\nloadings = [\"20.1 mg/cm^2\", \"25.2 mg/cm^2\"]\nseeds = 2\n"
+                    "measured_loadings = [\"20.1 mg/cm^2\"]\nmeasured_thickness = [\"84 um\"]\n",
+                    "t");
     ASSERT_EQ(ok.study_loadings.size(), 2u);
     EXPECT_DOUBLE_EQ(ok.study_loadings[1], 0.252);
     EXPECT_DOUBLE_EQ(ok.measured_thickness[0], 84e-6);
     EXPECT_TRUE(ok.measured_density.empty());
-    const std::string msg = input_error("[study]\nmeasured_loadings = [\"20.1 mg/cm^2\", \"25.2 mg/cm^2\"]\n"
-                                        "measured_thickness = [\"84 um\"]\n");
+    const std::string msg =
+        input_error("[study]\nmeasured_loadings = [\"20.1 mg/cm^2\", \"25.2 mg/cm^2\"]\n"
+                    "measured_thickness = [\"84 um\"]\n");
     EXPECT_NE(msg.find("study.measured_thickness"), std::string::npos) << msg;
     EXPECT_NE(msg.find("one per measured loading"), std::string::npos) << msg;
     EXPECT_NE(input_error("[study]\nseeds = 0\n").find("study.seeds"), std::string::npos);
     // Arrays that must not be empty still say so.
-    EXPECT_NE(input_error("[formulation]\nncm_diameters = []\n").find("non-empty"), std::string::npos);
+    EXPECT_NE(input_error("[formulation]\nncm_diameters = []\n").find("non-empty"),
+              std::string::npos);
 }
 
 TEST(Config, WrongTypeNamesKey) {
@@ -286,9 +304,11 @@ TEST(Config, ForceRatioRefusesItsDerivedFactors) {
         EXPECT_NE(msg.find("force_ratio"), std::string::npos) << msg;
         EXPECT_NE(msg.find("allowed: 0"), std::string::npos) << msg;
     }
-    const Config c = load_config("", "t", {"scaling.scheme=\"force_ratio\"", "scaling.stiffness_factor=20"});
+    const Config c =
+        load_config("", "t", {"scaling.scheme=\"force_ratio\"", "scaling.stiffness_factor=20"});
     EXPECT_EQ(c.scaling_scheme, "force_ratio");
     EXPECT_EQ(c.stiffness_factor, 20.0);
     EXPECT_NE(input_error("", {"scaling.scheme=\"fast\""}).find("paper"), std::string::npos);
-    EXPECT_NE(input_error("", {"scaling.stiffness_factor=0"}).find("scaling.stiffness_factor"), std::string::npos);
+    EXPECT_NE(input_error("", {"scaling.stiffness_factor=0"}).find("scaling.stiffness_factor"),
+              std::string::npos);
 }

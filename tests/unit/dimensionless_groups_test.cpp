@@ -79,7 +79,8 @@ TEST(DimensionlessGroups, ForceRatioKeepsEveryForceRatio) {
         expect_rel(s.stokes_cb / p.stokes_cb, 1e8, 1e-9);
         expect_rel(s.inertial / p.inertial, 1e6 / std::sqrt(1e4), 1e-9);
         expect_rel(s.overlap_ncm_cb / p.overlap_ncm_cb, std::pow(1e4 / 8, 2.0 / 3.0), 1e-9);
-        expect_rel(s.overlap_ncm_substrate / p.overlap_ncm_substrate, std::pow(1e4 / 8, 2.0 / 3.0), 1e-9);
+        expect_rel(s.overlap_ncm_substrate / p.overlap_ncm_substrate, std::pow(1e4 / 8, 2.0 / 3.0),
+                   1e-9);
     }
 }
 

@@ -3,6 +3,7 @@
 // contract (forces/pair_law.hpp): its force against the derivative of its HHF energy, its limits,
 // its stiffness, its config mapping, and energy conservation of a head-on approach through the
 // full engine.
+#include "drydem/drying/scaling.hpp"
 #include "drydem/engine/simulation.hpp"
 #include "drydem/forces/force_field.hpp"
 #include <gtest/gtest.h>
@@ -38,7 +39,8 @@ TEST(DoubleLayer, ForceIsMinusTheDerivativeOfTheHhfEnergy) {
     for (double h : {0.0005e-6, 0.01e-6, 0.05e-6, 0.2e-6, 0.45e-6}) {
         const PairGeometry g = pair_at(h);
         const double dh = 1e-4 * kLambda;
-        const double expected = -(energy(h + dh, g.r_eff, p) - energy(h - dh, g.r_eff, p)) / (2 * dh);
+        const double expected =
+            -(energy(h + dh, g.r_eff, p) - energy(h - dh, g.r_eff, p)) / (2 * dh);
         const PairForce f = double_layer(g, p);
         // Repulsive: i (at the origin, n = +x toward j) is pushed along -n.
         EXPECT_NEAR(-f.force_i.x, expected, 1e-7 * expected) << "h = " << h;
@@ -70,7 +72,8 @@ TEST(DoubleLayer, StiffnessIsMinusTheForceDerivativeAtTheClosestApproach) {
     for (double h : {0.002e-6, 0.03e-6, 0.3e-6}) {
         const double dh = 1e-4 * kLambda, r_eff = 0.5 * kR;
         const double expected =
-            -(double_layer_magnitude(h + dh, r_eff, p) - double_layer_magnitude(h - dh, r_eff, p)) / (2 * dh);
+            -(double_layer_magnitude(h + dh, r_eff, p) - double_layer_magnitude(h - dh, r_eff, p)) /
+            (2 * dh);
         const PairGeometry g = pair_at(h);
         EXPECT_NEAR(double_layer_stiffness(g, p), expected, 1e-6 * expected);
         // The guard's estimate: at the skin-reduced gap, clamped at contact.
@@ -86,13 +89,15 @@ TEST(DoubleLayer, ConfigMappingScalesLikeVanDerWaalsAndDefaultsToTheLubricationR
     SizeClass cb{1.5e-6, kRho, 0, 0, true}, ncm{6.5e-6, 4740, 0, 0, false};
     EXPECT_EQ(DoubleLayerLaw::from_config(c, cb, ncm).amplitude, 0.0); // off by default
     c.double_layer = true;
-    const DoubleLayerParams p = DoubleLayerLaw::from_config(c, cb, ncm);
+    // The law receives the simulated values (drying/scaling.cpp): the strength × the Hamaker factor.
+    const Config sim = simulated_config(c, scale_parameters(c));
+    const DoubleLayerParams p = DoubleLayerLaw::from_config(sim, cb, ncm);
     const double expected = 4 * std::numbers::pi * 32.2 * 8.8541878128e-12 * 0.025 * 0.025 * 1e7;
     EXPECT_NEAR(p.amplitude, expected, 1e-12 * expected);
     EXPECT_DOUBLE_EQ(p.debye_length, 100e-9);
     EXPECT_NEAR(p.cutoff_gap, 2 * 0.75e-6 * 3.25e-6 / 4.0e-6, 1e-18); // r_L = 2R*
     // Through the list: the pair table gets it, and the neighbour range does not grow.
-    const PairParams pp = PairLaws::from_config(c, cb, ncm);
+    const PairParams pp = PairLaws::from_config(sim, cb, ncm);
     EXPECT_EQ(law<DoubleLayerLaw>(pp).amplitude, p.amplitude);
     EXPECT_DOUBLE_EQ(interaction_range(pp, 0.75e-6, 3.25e-6), p.cutoff_gap);
 }

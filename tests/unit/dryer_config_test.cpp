@@ -27,7 +27,8 @@ std::string input_error(const std::vector<std::string>& sets) {
 }
 
 void expect_contains(const std::string& text, const std::vector<std::string>& parts) {
-    for (const std::string& p : parts) EXPECT_NE(text.find(p), std::string::npos) << "'" << p << "' not in: " << text;
+    for (const std::string& p : parts)
+        EXPECT_NE(text.find(p), std::string::npos) << "'" << p << "' not in: " << text;
 }
 
 TEST(DryerConfig, DefaultsAreTableA1AndPresetTable2) {
@@ -50,10 +51,12 @@ TEST(DryerConfig, DefaultsAreTableA1AndPresetTable2) {
 }
 
 TEST(DryerConfig, UnitsAndOverridesApply) {
-    const Config c = load({"dryer.air_temperatures=[\"70 degC\", \"373.15 K\"]", "dryer.zone_lengths=[\"1.5 m\", \"250 cm\"]",
-                           "dryer.heat_transfer_coefficients=[\"30 W/(m^2*K)\", 45]",
-                           "dryer.preset=physical", "dryer.analogy_exponent=0.4",
-                           "dryer.vapour_pressure=landolt", "dryer.initial_film_temperature=20degC"});
+    const Config c =
+        load({"dryer.air_temperatures=[\"70 degC\", \"373.15 K\"]",
+              "dryer.zone_lengths=[\"1.5 m\", \"250 cm\"]",
+              "dryer.heat_transfer_coefficients=[\"30 W/(m^2*K)\", 45]", "dryer.preset=physical",
+              "dryer.analogy_exponent=0.4", "dryer.vapour_pressure=landolt",
+              "dryer.initial_film_temperature=20degC"});
     EXPECT_DOUBLE_EQ(c.dryer_air_temperatures[0], 343.15);
     EXPECT_DOUBLE_EQ(c.dryer_zone_lengths[1], 2.5);
     EXPECT_DOUBLE_EQ(c.dryer_heat_transfer_coefficients[0], 30.0);
@@ -73,13 +76,15 @@ TEST(DryerConfig, ZeroOrNegativeZoneLengthIsRejected) {
 }
 
 TEST(DryerConfig, ZeroLineSpeedIsRejected) {
-    expect_contains(input_error({"dryer.line_speed=0"}), {"dryer.line_speed", "0", "out of range", "(0"});
+    expect_contains(input_error({"dryer.line_speed=0"}),
+                    {"dryer.line_speed", "0", "out of range", "(0"});
 }
 
 TEST(DryerConfig, AirBelowInitialFilmTemperatureIsRejected) {
-    expect_contains(input_error({"dryer.air_temperatures=[\"80 degC\", \"20 degC\", \"120 degC\"]"}),
-                    {"dryer.air_temperatures", "293.15 K", "zone 2", "dryer.initial_film_temperature",
-                     "allowed >= 298.15 K"});
+    expect_contains(
+        input_error({"dryer.air_temperatures=[\"80 degC\", \"20 degC\", \"120 degC\"]"}),
+        {"dryer.air_temperatures", "293.15 K", "zone 2", "dryer.initial_film_temperature",
+         "allowed >= 298.15 K"});
     // and raising the initial temperature above the air of zone 1
     expect_contains(input_error({"dryer.initial_film_temperature=\"85 degC\""}),
                     {"dryer.air_temperatures", "zone 1"});
@@ -98,12 +103,15 @@ TEST(DryerConfig, MismatchedZoneArraysAreRejected) {
 }
 
 TEST(DryerConfig, OtherBadValuesAreRejected) {
-    expect_contains(input_error({"dryer.preset=calibrated"}), {"dryer.preset", "\"table2\"", "\"physical\""});
-    expect_contains(input_error({"dryer.schedule=dryer"}), {"dryer.schedule", "\"rates\"", "\"model\""});
+    expect_contains(input_error({"dryer.preset=calibrated"}),
+                    {"dryer.preset", "\"table2\"", "\"physical\""});
+    expect_contains(input_error({"dryer.schedule=dryer"}),
+                    {"dryer.schedule", "\"rates\"", "\"model\""});
     expect_contains(input_error({"dryer.final_porosity=1"}), {"dryer.final_porosity"});
     expect_contains(input_error({"dryer.time_step=\"0.1 s\""}), {"dryer.time_step"});
-    expect_contains(input_error({"dryer.air_temperatures=[\"80 degC\", \"100 degC\", \"250 degC\"]"}),
-                    {"dryer.air_temperatures", "480"});
+    expect_contains(
+        input_error({"dryer.air_temperatures=[\"80 degC\", \"100 degC\", \"250 degC\"]"}),
+        {"dryer.air_temperatures", "480"});
     expect_contains(input_error({"dryer.air_temperatures=[\"80 m\", \"100 degC\", \"120 degC\"]"}),
                     {"dryer.air_temperatures"});
     // the model schedule needs the DEM's equal zones
@@ -117,7 +125,8 @@ TEST(DryerConfig, ModelScheduleReplacesRates) {
     ASSERT_EQ(c.shrinkage_rates.size(), 2u); // 20.1 mg/cm2 consolidates in zone 2
     EXPECT_NEAR(c.shrinkage_rates[0] * 1e6, 0.669, 0.004);
     EXPECT_NEAR(c.shrinkage_rates[1] * 1e6, 1.198, 0.006);
-    const Config thin = dryer::with_model_schedule(load({"dryer.schedule=model", "film.areal_loading=3mg/cm^2"}));
+    const Config thin =
+        dryer::with_model_schedule(load({"dryer.schedule=model", "film.areal_loading=3mg/cm^2"}));
     EXPECT_EQ(thin.shrinkage_rates.size(), 1u); // the quick case consolidates in zone 1
 }
 

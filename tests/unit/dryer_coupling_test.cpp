@@ -22,7 +22,8 @@ TEST(DryerCoupling, ConvergesOnMockDem) {
         seen_porosity.push_back(porosity_in);
         return 90e-6 + 2.0 * (rates[0] - 0.65e-6); // ~90 um, i.e. porosity ≈ 0.48
     };
-    const CouplingResult r = couple_dryer_dem(p, dem, 0.5e-6, 10, [&](const CouplingIteration&) { ++logged; });
+    const CouplingResult r =
+        couple_dryer_dem(p, dem, 0.5e-6, 10, [&](const CouplingIteration&) { ++logged; });
     EXPECT_TRUE(r.converged) << r.message;
     EXPECT_GE(r.iterations.size(), 2u);
     EXPECT_LE(r.iterations.size(), 4u);
@@ -41,7 +42,9 @@ TEST(DryerCoupling, ConvergesOnMockDem) {
 TEST(DryerCoupling, StopsAtMaxIterationsWithMessage) {
     FilmDryerParams p = film_dryer_preset("table2");
     int calls = 0;
-    auto dem = [&](int, const std::vector<double>&, double) { return (++calls % 2) ? 85e-6 : 95e-6; };
+    auto dem = [&](int, const std::vector<double>&, double) {
+        return (++calls % 2) ? 85e-6 : 95e-6;
+    };
     const CouplingResult r = couple_dryer_dem(p, dem, 0.5e-6, 3);
     EXPECT_FALSE(r.converged);
     EXPECT_EQ(calls, 3);

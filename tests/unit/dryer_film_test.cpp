@@ -67,7 +67,8 @@ void expect_table2(const char* preset, const RatesRef (&model)[4], double paper_
         p.areal_loading = paper_table2[i].areal_loading;
         const DryerRun run = simulate_film_dryer(p);
         const auto sections = fit_section_rates(p, run);
-        SCOPED_TRACE(::testing::Message() << preset << " L = " << p.areal_loading * 100 << " mg/cm2");
+        SCOPED_TRACE(::testing::Message()
+                     << preset << " L = " << p.areal_loading * 100 << " mg/cm2");
         ASSERT_EQ(sections.size(), 3u);
         ASSERT_TRUE(sections[0].rate && sections[1].rate);
         EXPECT_FALSE(sections[2].rate); // every film consolidates in section 2 (D-0)
@@ -86,15 +87,15 @@ void expect_table2(const char* preset, const RatesRef (&model)[4], double paper_
 
 // D-7.2, preset table2: reference values within 0.5 %, Table 2 within 5 %.
 TEST(DryerFilm, PresetTable2ReproducesTable2) {
-    const RatesRef ref[4] = {{0.669, 1.198, 67.8}, {0.657, 1.322, 77.1},
-                             {0.643, 1.360, 86.4}, {0.628, 1.377, 95.6}};
+    const RatesRef ref[4] = {
+        {0.669, 1.198, 67.8}, {0.657, 1.322, 77.1}, {0.643, 1.360, 86.4}, {0.628, 1.377, 95.6}};
     expect_table2("table2", ref, 0.05);
 }
 
 // D-7.2, preset physical (uncalibrated): Table 2 within 11 %.
 TEST(DryerFilm, PresetPhysicalWithin11PercentOfTable2) {
-    const RatesRef ref[4] = {{0.626, 1.183, 70.1}, {0.614, 1.267, 79.9},
-                             {0.601, 1.295, 89.6}, {0.587, 1.308, 99.4}};
+    const RatesRef ref[4] = {
+        {0.626, 1.183, 70.1}, {0.614, 1.267, 79.9}, {0.601, 1.295, 89.6}, {0.587, 1.308, 99.4}};
     expect_table2("physical", ref, 0.11);
 }
 
@@ -142,9 +143,11 @@ TEST(DryerFilm, EnergyBalanceCloses) {
         p.ackermann = ackermann;
         const DryerRun run = simulate_film_dryer(p);
         const DryerSample& end = run.samples.back();
-        const double dH = film_sensible_enthalpy(p, end.temperature, end.liquid_mass) -
-                          film_sensible_enthalpy(p, p.initial_temperature, run.geometry.initial_liquid);
-        EXPECT_NEAR(run.heat_in, dH + run.liquid_enthalpy_out + run.latent_heat_out, 1e-6 * run.heat_in);
+        const double dH =
+            film_sensible_enthalpy(p, end.temperature, end.liquid_mass) -
+            film_sensible_enthalpy(p, p.initial_temperature, run.geometry.initial_liquid);
+        EXPECT_NEAR(run.heat_in, dH + run.liquid_enthalpy_out + run.latent_heat_out,
+                    1e-6 * run.heat_in);
         EXPECT_GT(run.latent_heat_out, 0.5 * run.heat_in); // most heat evaporates NMP
     }
 }

@@ -15,9 +15,9 @@ void expect_rel(double actual, double expected, double rel = 1e-4) {
 TEST(DryerProperties, VapourPressureAnchoredAtCheckValues) {
     expect_rel(vapour_pressure(298.15), 47.4009);
     expect_rel(vapour_pressure(353.15), 1172.67);
-    expect_rel(vapour_pressure(373.15), 2976.00);  // Table A1
+    expect_rel(vapour_pressure(373.15), 2976.00); // Table A1
     expect_rel(vapour_pressure(393.15), 6867.32);
-    expect_rel(vapour_pressure(475.2), 101325.0);  // normal boiling point
+    expect_rel(vapour_pressure(475.2), 101325.0); // normal boiling point
 }
 
 TEST(DryerProperties, VapourPressureLandoltAtCheckValues) {
@@ -43,7 +43,8 @@ TEST(DryerProperties, HeatCapacitiesOfNmp) {
     // the closed-form sensible enthalpy is the integral of c_p,l (Simpson is exact for a line)
     const double a = 298.15, b = 393.15;
     const double simpson = (b - a) / 6.0 *
-        (liquid_heat_capacity(a) + 4 * liquid_heat_capacity(0.5 * (a + b)) + liquid_heat_capacity(b));
+                           (liquid_heat_capacity(a) + 4 * liquid_heat_capacity(0.5 * (a + b)) +
+                            liquid_heat_capacity(b));
     expect_rel(liquid_sensible_enthalpy(a, b), simpson, 1e-12);
 }
 

@@ -37,8 +37,9 @@ TEST(DryerReport, CsvHasHeaderAndRowsEveryTenthSecond) {
     std::ifstream csv(dir / "dryer.csv");
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_EQ(header, "position_m,time_s,film_temperature_C,dryer_temperature_C,solvent_mass_fraction,"
-                      "film_thickness_um,evaporation_rate_g_m2_s,consolidated");
+    EXPECT_EQ(header,
+              "position_m,time_s,film_temperature_C,dryer_temperature_C,solvent_mass_fraction,"
+              "film_thickness_um,evaporation_rate_g_m2_s,consolidated");
     int rows = 0;
     while (std::getline(csv, line)) ++rows;
     EXPECT_EQ(rows, 1801); // 180 s every 0.1 s, plus the exit

@@ -15,7 +15,7 @@ TEST(RecentPace, FollowsAPaceThatDrops) {
     EXPECT_NEAR(p.pace(), 1e-8, 1e-20);
     for (int s = 110; s <= 400; s += 10) p.add(s, 1e-6 + 0.25e-8 * (s - 100));
     EXPECT_NEAR(p.pace(), 0.25e-8, 1e-20); // the window holds only the slow part
-    EXPECT_NEAR(p.eta(1e-6), 400.0, 1e-6);  // the average since the start would say ~160 s
+    EXPECT_NEAR(p.eta(1e-6), 400.0, 1e-6); // the average since the start would say ~160 s
 }
 
 TEST(RecentPace, KeepsTheWindowSpannedWithSparseSamples) {

@@ -37,9 +37,9 @@ TEST(Formulation, WorkedExampleTableV15) {
         SCOPED_TRACE(row.loading);
         const FilmRecipe r = make_recipe(paper_case(row.loading));
         EXPECT_NEAR(r.wet_film_height / kUm, row.h_wet_um, 0.005);
-        EXPECT_NEAR(r.solids_density, 4287.5, 0.05);        // Eq. 4, M-1.5
-        EXPECT_NEAR(r.cb_effective_density, 1187.5, 1e-9);  // M-1.3
-        ASSERT_EQ(r.species.size(), 6u); // five NCM classes, then CB
+        EXPECT_NEAR(r.solids_density, 4287.5, 0.05);       // Eq. 4, M-1.5
+        EXPECT_NEAR(r.cb_effective_density, 1187.5, 1e-9); // M-1.3
+        ASSERT_EQ(r.species.size(), 6u);                   // five NCM classes, then CB
         int ncm_total = 0;
         for (int k = 0; k < 5; ++k) {
             EXPECT_FALSE(r.species[k].is_cb);
@@ -62,13 +62,13 @@ TEST(Formulation, WorkedExampleTableV15) {
 TEST(Formulation, Details20p1) {
     const FilmRecipe r = make_recipe(paper_case(20.1));
     EXPECT_NEAR(r.base_area / (kUm * kUm), 5625.0, 1e-9);
-    EXPECT_NEAR(r.dry_mass / 1e-9, 1.1306, 5e-5);               // 1.1306 ug
-    EXPECT_NEAR(r.ncm_volume / kUm3, 224217, 0.5);              // V_NCM
+    EXPECT_NEAR(r.dry_mass / 1e-9, 1.1306, 5e-5);  // 1.1306 ug
+    EXPECT_NEAR(r.ncm_volume / kUm3, 224217, 0.5); // V_NCM
     const std::array<double, 5> unrounded = {311.9, 196.6, 134.6, 90.4, 58.6};
     for (int k = 0; k < 5; ++k) EXPECT_NEAR(r.species[k].count_exact, unrounded[k], 0.05);
-    EXPECT_NEAR(r.cb_carbon_mass / 1660 / kUm3, 20433, 0.5);    // CB carbon volume
-    EXPECT_NEAR(r.cb_envelope_volume / kUm3, 81732, 0.5);       // CB envelopes
-    EXPECT_NEAR(r.pvdf_mass / 1780 / kUm3, 19055, 0.5);         // PVDF volume (C-1 density)
+    EXPECT_NEAR(r.cb_carbon_mass / 1660 / kUm3, 20433, 0.5);          // CB carbon volume
+    EXPECT_NEAR(r.cb_envelope_volume / kUm3, 81732, 0.5);             // CB envelopes
+    EXPECT_NEAR(r.pvdf_mass / 1780 / kUm3, 19055, 0.5);               // PVDF volume (C-1 density)
     EXPECT_NEAR(r.base_area * r.wet_film_height / kUm3, 734146, 1.0); // box volume
 }
 

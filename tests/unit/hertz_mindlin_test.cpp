@@ -31,11 +31,12 @@ HertzMindlinParams material(double e = 0.5, double mu = 0.8, double mu_r = 0.0) 
 }
 
 /// Pair (i, j) with overlap δ along n; velocities and spins as given.
-PairGeometry pair(double r_i, double r_j, double overlap, const Vec3& v_i = {}, const Vec3& v_j = {},
-                  const Vec3& w_i = {}, const Vec3& w_j = {}, const Vec3& n = kN) {
+PairGeometry pair(double r_i, double r_j, double overlap, const Vec3& v_i = {},
+                  const Vec3& v_j = {}, const Vec3& w_i = {}, const Vec3& w_j = {},
+                  const Vec3& n = kN) {
     const double d = r_i + r_j - overlap;
-    return make_pair_geometry(d * n, d, r_i, r_j, sphere_mass(r_i), sphere_mass(r_j), v_i, v_j,
-                              w_i, w_j);
+    return make_pair_geometry(d * n, d, r_i, r_j, sphere_mass(r_i), sphere_mass(r_j), v_i, v_j, w_i,
+                              w_j);
 }
 
 // M-2.1 / M-10 header: E* = 7.8022e10 Pa, G* = 1.6063e10 Pa; β(e = 0.5).
@@ -188,14 +189,17 @@ TEST(HertzMindlin, RollingFrictionTorque) {
     const Vec3 expect = -mu_r * f_n * r_star * kT; // ω̂_rel = +kT
     EXPECT_NEAR(norm(with.torque_i - without.torque_i - expect), 0.0, 1e-12 * norm(expect));
     EXPECT_NEAR(norm(with.torque_j - without.torque_j + expect), 0.0, 1e-12 * norm(expect));
-    expect_rel(norm(expect), mu_r * 4.0 / 3.0 * material().e_star * std::sqrt(r_star) *
-                                 std::pow(kDelta, 1.5) * r_star, 1e-12);
+    expect_rel(norm(expect),
+               mu_r * 4.0 / 3.0 * material().e_star * std::sqrt(r_star) * std::pow(kDelta, 1.5) *
+                   r_star,
+               1e-12);
     // No relative rotation: no rolling torque.
     Vec3 xi;
-    const PairForce same = hertz_mindlin(pair(kR, kR, kDelta, {}, {}, w_j, w_j),
-                                         material(0.5, 0.8, mu_r), xi, kDt);
+    const PairForce same =
+        hertz_mindlin(pair(kR, kR, kDelta, {}, {}, w_j, w_j), material(0.5, 0.8, mu_r), xi, kDt);
     Vec3 xi2;
-    const PairForce ref = hertz_mindlin(pair(kR, kR, kDelta, {}, {}, w_j, w_j), material(), xi2, kDt);
+    const PairForce ref =
+        hertz_mindlin(pair(kR, kR, kDelta, {}, {}, w_j, w_j), material(), xi2, kDt);
     EXPECT_NEAR(norm(same.torque_i - ref.torque_i), 0.0, 1e-12 * norm(ref.torque_i) + 1e-28);
 }
 

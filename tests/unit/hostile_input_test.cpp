@@ -30,7 +30,9 @@ std::string config_error(const std::vector<std::string>& sets, std::string_view 
     return {};
 }
 
-bool has(const std::string& text, std::string_view part) { return text.find(part) != std::string::npos; }
+bool has(const std::string& text, std::string_view part) {
+    return text.find(part) != std::string::npos;
+}
 
 } // namespace
 
@@ -55,8 +57,9 @@ TEST(DerivedQuantities, BareLengthGetsAUnitHint) {
 TEST(DerivedQuantities, FilmWithoutParticlesIsRefused) {
     EXPECT_TRUE(has(config_error({"film.areal_loading=1e-300"}), "the film has no particles"));
     EXPECT_TRUE(has(config_error({"film.areal_loading=1e-12"}), "the film has no particles"));
-    const std::string pvdf = config_error({"formulation.ncm_mass_fraction=0", "formulation.cb_mass_fraction=0",
-                                           "formulation.pvdf_mass_fraction=1"});
+    const std::string pvdf =
+        config_error({"formulation.ncm_mass_fraction=0", "formulation.cb_mass_fraction=0",
+                      "formulation.pvdf_mass_fraction=1"});
     EXPECT_TRUE(has(pvdf, "0 NCM and 0 CB particles")) << pvdf;
 }
 
@@ -67,7 +70,8 @@ TEST(DerivedQuantities, HugeValuesAreRefusedAtTheirKey) {
     EXPECT_TRUE(has(k, "scaled gravity is inf")) << k;
     EXPECT_TRUE(has(k, "scaling.time_factor")) << k;
     const std::string relax = config_error({"drying.relaxation=1e308"});
-    EXPECT_TRUE(has(relax, "drying.relaxation = 1e+308 s is not shorter than run.max_process_time = 300 s"))
+    EXPECT_TRUE(
+        has(relax, "drying.relaxation = 1e+308 s is not shorter than run.max_process_time = 300 s"))
         << relax;
     const std::string load = config_error({"film.areal_loading=1e308"});
     EXPECT_TRUE(has(load, "film.areal_loading")) << load;
@@ -88,7 +92,7 @@ TEST(DerivedQuantities, DefaultFilmIsFiniteAndPositive) {
     EXPECT_NEAR(d.wet_film_height, 130.51e-6, 0.01e-6);
     EXPECT_GT(d.particles, 1e4);
     EXPECT_LT(d.particles, max_particles);
-    EXPECT_NEAR(d.steps, 8.5e4, 0.05e4); // as `drydem check` prints (semi-implicit cap 1e-10 s)
+    EXPECT_NEAR(d.steps, 8.5e4, 0.05e4);     // as `drydem check` prints (semi-implicit cap 1e-10 s)
     EXPECT_NEAR(d.dryer_steps, 9000.0, 1.0); // 3 zones of 2 m at 2 m/min, 0.02 s steps
 }
 
@@ -99,8 +103,9 @@ TEST(ConfigStrings, SetValueMustBeOneValue) {
 
 // config.toml is written by the TOML library: whatever run.name holds reads back unchanged.
 TEST(ConfigStrings, HostileNamesRoundTripThroughToToml) {
-    for (const std::string name : {"say \"hi\"", "back\\slash", "quote ' and \"\"\" and '''", "# not a comment",
-                                   "[table]", "ünïcödé µm", "x = 1", "trailing \\"}) {
+    for (const std::string name :
+         {"say \"hi\"", "back\\slash", "quote ' and \"\"\" and '''", "# not a comment", "[table]",
+          "ünïcödé µm", "x = 1", "trailing \\"}) {
         Config c;
         c.name = name;
         const std::string text = to_toml(c);
@@ -112,8 +117,9 @@ TEST(ConfigStrings, HostileNamesRoundTripThroughToToml) {
 }
 
 TEST(ConfigStrings, NamesThatCannotNameAFolderAreRefused) {
-    for (const std::string bad : {"run.name=\"a\\nb\"", "run.name=\"tab\\there\"", "run.name=\"../up\"",
-                                  "run.name=\"a/b\"", "run.name=\"\"", "run.name=\"..\""}) {
+    for (const std::string bad :
+         {"run.name=\"a\\nb\"", "run.name=\"tab\\there\"", "run.name=\"../up\"", "run.name=\"a/b\"",
+          "run.name=\"\"", "run.name=\"..\""}) {
         const std::string msg = config_error({bad});
         EXPECT_TRUE(has(msg, "config key 'run.name'")) << bad << ": " << msg;
         EXPECT_TRUE(has(msg, "without control characters")) << msg;
@@ -127,12 +133,15 @@ TEST(UnitsNesting, DeepParenthesesAreAnErrorNotAStackOverflow) {
         (void)parse_quantity(deep, Dimension::length, "film.box_x");
         ADD_FAILURE() << "no InputError";
     } catch (const InputError& e) {
-        EXPECT_TRUE(has(e.what(), "more than 16 nested parentheses")) << std::string(e.what()).substr(0, 200);
+        EXPECT_TRUE(has(e.what(), "more than 16 nested parentheses"))
+            << std::string(e.what()).substr(0, 200);
     }
-    EXPECT_EQ(parse_quantity("2 " + std::string(16, '(') + "um" + std::string(16, ')'), Dimension::length, "k"),
+    EXPECT_EQ(parse_quantity("2 " + std::string(16, '(') + "um" + std::string(16, ')'),
+                             Dimension::length, "k"),
               2e-6);
-    EXPECT_THROW((void)parse_quantity("1 ((((((((((m^9)^9)^9)^9)^9)^9)^9)^9)^9)^9)", Dimension::length, "k"),
-                 InputError);
+    EXPECT_THROW(
+        (void)parse_quantity("1 ((((((((((m^9)^9)^9)^9)^9)^9)^9)^9)^9)^9)", Dimension::length, "k"),
+        InputError);
 }
 
 namespace {
@@ -142,7 +151,8 @@ using drydem::testing_support::temp_dir;
 /// Three NCM spheres of radius 3 um on the substrate of a 40 um box, one line each (lines 2-4).
 std::string packing(const std::string& third = "3,1,3e-6,4740,30e-6,30e-6,3e-6") {
     return "id,type,radius_m,density_kg_m3,x_m,y_m,z_m\n1,1,3e-6,4740,10e-6,10e-6,3e-6\n"
-           "2,1,3e-6,4740,16.5e-6,10e-6,3e-6\n" + third + "\n";
+           "2,1,3e-6,4740,16.5e-6,10e-6,3e-6\n" +
+           third + "\n";
 }
 
 std::string geometry_error(const std::string& text, double box = 40e-6) {
@@ -161,7 +171,8 @@ std::string geometry_error(const std::string& text, double box = 40e-6) {
 TEST(ParticleGeometry, PossiblePackingsPass) {
     EXPECT_EQ(geometry_error(packing()), "");
     // Touching and slightly overlapping spheres are packings.
-    EXPECT_EQ(geometry_error(packing("3,1,3e-6,4740,10e-6,15.5e-6,3e-6")), ""); // 0.5 um into particle 1
+    EXPECT_EQ(geometry_error(packing("3,1,3e-6,4740,10e-6,15.5e-6,3e-6")),
+              ""); // 0.5 um into particle 1
     // The peers' settled bed (7,526 spheres, LAMMPS data) passes.
     const fs::path bed = fs::path(DRYDEM_SOURCE_DIR "/tests/data/peers/settled_30um.data");
     const ParticleFile f = read_particles(bed);
@@ -184,20 +195,24 @@ TEST(ParticleGeometry, ImpossibleParticlesNameTheLineAndTheReason) {
     const std::string far = geometry_error(packing("3,1,3e-6,4740,1,30e-6,3e-6"));
     EXPECT_TRUE(has(far, "more than 10 box lengths outside")) << far;
     // Across the periodic edge: x = 0.5 um and x = 39.5 um are 1 um apart.
-    const std::string wrap = geometry_error("id,type,radius_m,x_m,y_m,z_m\n1,1,3e-6,0.5e-6,10e-6,3e-6\n"
-                                            "2,1,3e-6,39.5e-6,10e-6,3e-6\n");
+    const std::string wrap =
+        geometry_error("id,type,radius_m,x_m,y_m,z_m\n1,1,3e-6,0.5e-6,10e-6,3e-6\n"
+                       "2,1,3e-6,39.5e-6,10e-6,3e-6\n");
     EXPECT_TRUE(has(wrap, "overlap grossly")) << wrap;
 }
 
 TEST(ParticleGeometry, InvertedDumpBoxIsRefusedAtItsLine) {
     const fs::path file = temp_dir() / "inverted.lammpstrj";
-    std::ofstream(file) << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp fm\n"
-                           "4e-05 0\n0 4e-05\n0 1e-4\nITEM: ATOMS id type radius x y z\n1 1 3e-6 1e-5 1e-5 3e-6\n";
+    std::ofstream(file)
+        << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp fm\n"
+           "4e-05 0\n0 4e-05\n0 1e-4\nITEM: ATOMS id type radius x y z\n1 1 3e-6 1e-5 1e-5 3e-6\n";
     try {
         (void)read_particles(file);
         ADD_FAILURE() << "no InputError";
     } catch (const InputError& e) {
-        EXPECT_TRUE(has(e.what(), "inverted.lammpstrj:6: box bounds 4e-05 0 in x are inverted or empty")) << e.what();
+        EXPECT_TRUE(
+            has(e.what(), "inverted.lammpstrj:6: box bounds 4e-05 0 in x are inverted or empty"))
+            << e.what();
     }
 }
 
@@ -223,8 +238,10 @@ TEST(DerivedQuantities, NonFiniteModelQuantitiesAreRefused) {
 // A run estimated beyond a day is allowed but its estimate is there to warn with (`drydem check`,
 // `drydem run`): k = 2.5 makes the default film ~1e11 steps.
 TEST(DerivedQuantities, WallTimeEstimateOfAYearLongRun) {
-    const DerivedQuantities d = derived_quantities(load_config("", "t", {"scaling.time_factor=2.5"}));
+    const DerivedQuantities d =
+        derived_quantities(load_config("", "t", {"scaling.time_factor=2.5"}));
     EXPECT_GT(estimated_wall_time(d, 2), 365 * wall_time_warning);
-    const DerivedQuantities paper = derived_quantities(load_config(default_config_toml(), "default"));
+    const DerivedQuantities paper =
+        derived_quantities(load_config(default_config_toml(), "default"));
     EXPECT_LT(estimated_wall_time(paper, 2), wall_time_warning);
 }

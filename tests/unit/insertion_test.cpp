@@ -47,7 +47,8 @@ void check_layout(const Film& f, const ParticleStore& p) {
         EXPECT_LE(x.z, h - p.radius[i]) << "particle " << i << " pierces the level";
         EXPECT_EQ(norm2(p.velocity[i]), 0.0);
     }
-    for (std::size_t k = 0; k < r.species.size(); ++k) EXPECT_EQ(per_species[k], r.species[k].count);
+    for (std::size_t k = 0; k < r.species.size(); ++k)
+        EXPECT_EQ(per_species[k], r.species[k].count);
     // Largest first (C-2): insertion order has non-increasing radius.
     for (std::size_t i = 1; i < p.size(); ++i) EXPECT_LE(p.radius[i], p.radius[i - 1]);
     std::size_t overlaps = 0;

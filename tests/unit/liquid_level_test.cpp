@@ -16,8 +16,8 @@ LiquidLevelSchedule paper_20p1() {
 
 TEST(LiquidLevel, ScheduleV12) {
     const LiquidLevelSchedule l = paper_20p1();
-    EXPECT_NEAR(l.level(0.0) * 1e6, 130.51, 0.005);  // z_L(0) = H_wet
-    EXPECT_NEAR(l.level(6e-6) * 1e6, 90.31, 0.005);  // after zone 1 at 6.70 m/s
+    EXPECT_NEAR(l.level(0.0) * 1e6, 130.51, 0.005); // z_L(0) = H_wet
+    EXPECT_NEAR(l.level(6e-6) * 1e6, 90.31, 0.005); // after zone 1 at 6.70 m/s
     EXPECT_NEAR((l.level(3e-6) - l.level(0.0)) / 3e-6, -6.70, 1e-6);
     EXPECT_NEAR((l.level(9e-6) - l.level(7e-6)) / 2e-6, -11.93, 1e-6);
     // Continuous at the zone change.

@@ -201,8 +201,12 @@ TEST(Lubrication, FrozenRangeUsesTheLogarithmOfItsOwnKappaC) {
         EXPECT_EQ(p.log_kappa_c, std::log(kappa_c));
         const double l = -std::log(kappa_c), pi_eta = std::numbers::pi * 1.801;
         for (const double gap : {-0.05 * kR, 0.0, 0.5 * kappa_c * r_l}) {
-            const PairResistance r = lubrication_resistance(pair(s.r_i, s.r_j, gap, s.v_i, s.v_j, s.w_i, s.w_j), p);
-            expect_rel(r.normal, 6.0 * pi_eta * r_l * lubrication_x(kappa_c) * vinogradova_factor(kappa_c, kappa_c), 1e-14);
+            const PairResistance r =
+                lubrication_resistance(pair(s.r_i, s.r_j, gap, s.v_i, s.v_j, s.w_i, s.w_j), p);
+            expect_rel(r.normal,
+                       6.0 * pi_eta * r_l * lubrication_x(kappa_c) *
+                           vinogradova_factor(kappa_c, kappa_c),
+                       1e-14);
             expect_rel(r.sliding, pi_eta * r_l * l, 1e-14);
             expect_rel(r.rolling, (3.0 / 40.0) * 8.0 * pi_eta * r_l * r_l * r_l * l, 1e-14);
         }

@@ -38,14 +38,15 @@ TEST(OverlapCensus, UnequalPairAcrossThePeriodicSideAndTheSubstrate) {
     // NCM r = 5 um at x = 1 um and CB r = 1 um at x = 15.1 um in a 20 um box: d = 5.9 um through
     // the periodic side, overlap 0.1 um = 10 % of the CB radius.
     Structure s = box_of(20e-6);
-    s.add({1e-6, 10e-6, 4.8e-6}, 5e-6, Phase::ncm);      // 0.2 um into the substrate
-    s.add({15.1e-6, 10e-6, 4.8e-6}, 1e-6, Phase::cb);    // d = 5.9 um through the side
-    s.add({10e-6, 10e-6, 20e-6}, 1e-6, Phase::cb);       // touches nothing
+    s.add({1e-6, 10e-6, 4.8e-6}, 5e-6, Phase::ncm);   // 0.2 um into the substrate
+    s.add({15.1e-6, 10e-6, 4.8e-6}, 1e-6, Phase::cb); // d = 5.9 um through the side
+    s.add({10e-6, 10e-6, 20e-6}, 1e-6, Phase::cb);    // touches nothing
     const OverlapCensus c = overlap_census(s);
     ASSERT_EQ(c.ncm_cb.pairs, 1u);
     EXPECT_NEAR(c.ncm_cb.max, 0.1, 1e-9); // (5 + 1 - 5.9) / 1
     const double a = 5e-6, b = 1e-6, d = 5.9e-6;
-    const double lens = pi * (a + b - d) * (a + b - d) * (d * d + 2 * d * (a + b) - 3 * (a - b) * (a - b)) / (12 * d);
+    const double lens = pi * (a + b - d) * (a + b - d) *
+                        (d * d + 2 * d * (a + b) - 3 * (a - b) * (a - b)) / (12 * d);
     EXPECT_NEAR(c.ncm_cb.lens_volume, lens, 1e-9 * lens);
     EXPECT_NEAR(sphere_lens_volume(a, b, d), lens, 1e-9 * lens);
     ASSERT_EQ(c.ncm_substrate.pairs, 1u);

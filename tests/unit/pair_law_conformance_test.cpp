@@ -42,7 +42,10 @@ std::vector<Pair> film_pairs() {
     const FilmRecipe r = make_recipe(c);
     const ForceField ff = make_drying_force_field(c, r, scale_parameters(c));
     const int cb = r.cb_species(), ncm = cb - 1; // the largest NCM class is the last
-    auto mass = [&](int s) { return sphere_volume(0.5 * r.species[std::size_t(s)].diameter) * r.species[std::size_t(s)].density; };
+    auto mass = [&](int s) {
+        return sphere_volume(0.5 * r.species[std::size_t(s)].diameter) *
+               r.species[std::size_t(s)].density;
+    };
     auto rad = [&](int s) { return 0.5 * r.species[std::size_t(s)].diameter; };
     return {{"CB-CB", rad(cb), rad(cb), mass(cb), mass(cb), ff.pair_params(cb, cb)},
             {"NCM-CB", rad(ncm), rad(cb), mass(ncm), mass(cb), ff.pair_params(ncm, cb)}};
@@ -56,11 +59,13 @@ struct Motion {
 
 PairGeometry at(const Pair& p, double gap, const Motion& u) {
     const double d = p.r_i + p.r_j + gap;
-    return make_pair_geometry(d * kNormal, d, p.r_i, p.r_j, p.m_i, p.m_j, u.v_i, u.v_j, u.w_i, u.w_j);
+    return make_pair_geometry(d * kNormal, d, p.r_i, p.r_j, p.m_i, p.m_j, u.v_i, u.v_j, u.w_i,
+                              u.w_j);
 }
 
 template <class L>
-PairForce force_of(const Pair& p, double gap, const Motion& u, double dt = 0.0, PairResistance* r = nullptr) {
+PairForce force_of(const Pair& p, double gap, const Motion& u, double dt = 0.0,
+                   PairResistance* r = nullptr) {
     typename L::State s{};
     PairForce f{};
     L::add_force(at(p, gap, u), PairLaws::params<L>(p.params), s, dt, f, r);
@@ -72,20 +77,23 @@ double scale_of(const PairForce& a, const PairForce& b) {
 }
 
 void expect_close(const Vec3& a, const Vec3& b, double tol, const std::string& what) {
-    EXPECT_LE(norm(a - b), tol) << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", "
-                                << b.y << ", " << b.z << ")";
+    EXPECT_LE(norm(a - b), tol) << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs ("
+                                << b.x << ", " << b.y << ", " << b.z << ")";
 }
 
 template <class L>
 void check_law(const Pair& p, double gap) {
-    const std::string where = std::string(L::name) + ", " + p.name + ", gap " + std::to_string(gap * 1e9) + " nm";
+    const std::string where =
+        std::string(L::name) + ", " + p.name + ", gap " + std::to_string(gap * 1e9) + " nm";
     // Small velocities: the contact sticks (no Coulomb limit) and every law stays linear in them.
-    const Motion u{{1e-4, -2e-4, 3e-4}, {-2e-4, 1e-4, -1e-4}, {30.0, -50.0, 20.0}, {-10.0, 40.0, 60.0}};
+    const Motion u{
+        {1e-4, -2e-4, 3e-4}, {-2e-4, 1e-4, -1e-4}, {30.0, -50.0, 20.0}, {-10.0, 40.0, 60.0}};
     const PairForce rest = force_of<L>(p, gap, {}), moving = force_of<L>(p, gap, u);
     const double d = p.r_i + p.r_j + gap, tol = 1e-9 * scale_of(rest, moving);
 
     // Newton's third law with angular momentum (j receives -F_i by the contract's form).
-    expect_close(moving.torque_i + moving.torque_j, cross(d * kNormal, moving.force_i), tol * d, where + " torques");
+    expect_close(moving.torque_i + moving.torque_j, cross(d * kNormal, moving.force_i), tol * d,
+                 where + " torques");
 
     // Rigid-body motion of the pair: translation V and rotation Ω about i.
     const Vec3 V{2e-4, -1e-4, 5e-5}, W{40.0, -20.0, 30.0};
@@ -102,25 +110,34 @@ void check_law(const Pair& p, double gap) {
     EXPECT_NEAR(reported.normal, r.normal, 1e-12 * std::abs(r.normal)) << where;
     EXPECT_NEAR(reported.sliding, r.sliding, 1e-12 * std::abs(r.sliding)) << where;
     const PairForce dissipative = resistance_force(r, kNormal, u.v_i - u.v_j, u.w_i, u.w_j);
-    expect_close(moving.force_i - rest.force_i, dissipative.force_i, tol, where + " dissipative force");
-    expect_close(moving.torque_i - rest.torque_i, dissipative.torque_i, tol * d, where + " dissipative torque i");
-    expect_close(moving.torque_j - rest.torque_j, dissipative.torque_j, tol * d, where + " dissipative torque j");
+    expect_close(moving.force_i - rest.force_i, dissipative.force_i, tol,
+                 where + " dissipative force");
+    expect_close(moving.torque_i - rest.torque_i, dissipative.torque_i, tol * d,
+                 where + " dissipative torque i");
+    expect_close(moving.torque_j - rest.torque_j, dissipative.torque_j, tol * d,
+                 where + " dissipative torque j");
 
     // Stiffness: -dF_n/dh by central differences at rest (its magnitude: the van der Waals snap-in
     // has a negative stiffness, pair_law.hpp), and the sliding spring by one history step.
-    const PairResistance k = L::stiffness(at(p, gap, {}), at(p, gap, {}), PairLaws::params<L>(p.params));
+    const PairResistance k =
+        L::stiffness(at(p, gap, {}), at(p, gap, {}), PairLaws::params<L>(p.params));
     const double h = 1e-6 * p.r_j;
-    const double dfdh = (dot(force_of<L>(p, gap + h, {}).force_i, kNormal) - dot(force_of<L>(p, gap - h, {}).force_i, kNormal)) / (2 * h);
+    const double dfdh = (dot(force_of<L>(p, gap + h, {}).force_i, kNormal) -
+                         dot(force_of<L>(p, gap - h, {}).force_i, kNormal)) /
+                        (2 * h);
     const double noise = 1e-9 * norm(rest.force_i) / h + 1e-12; // rounding of F over the step
     if (gap > 0.0)
-        EXPECT_NEAR(k.normal, std::abs(dfdh), 1e-5 * std::abs(dfdh) + noise) << where << " normal stiffness";
+        EXPECT_NEAR(k.normal, std::abs(dfdh), 1e-5 * std::abs(dfdh) + noise)
+            << where << " normal stiffness";
     else // a bound in overlap: the double layer keeps its contact stiffness where its force is constant
         EXPECT_GE(k.normal, std::abs(dfdh) - noise) << where << " normal stiffness bound";
     const Vec3 t = perp(Vec3{1.0, 0.0, 0.0}, kNormal) / norm(perp(Vec3{1.0, 0.0, 0.0}, kNormal));
     const double dt = 1e-12, v = 1e-4;
-    const PairForce stepped = force_of<L>(p, gap, {v * t, {}, {}, {}}, dt), unstepped = force_of<L>(p, gap, {v * t, {}, {}, {}});
+    const PairForce stepped = force_of<L>(p, gap, {v * t, {}, {}, {}}, dt),
+                    unstepped = force_of<L>(p, gap, {v * t, {}, {}, {}});
     const double spring = -dot(stepped.force_i - unstepped.force_i, t) / (v * dt);
-    EXPECT_NEAR(k.sliding, spring, 1e-6 * std::abs(k.sliding) + 1e-9) << where << " sliding stiffness";
+    EXPECT_NEAR(k.sliding, spring, 1e-6 * std::abs(k.sliding) + 1e-9)
+        << where << " sliding stiffness";
 }
 
 template <std::size_t... K>

@@ -64,8 +64,8 @@ TEST(ParticleIo, ReadsPeersCsv) {
         }
     }
     // Counts of the 30 um base from the peers' README.
-    EXPECT_EQ(count, (std::map<int, std::size_t>{{1, 50}, {2, 31}, {3, 22}, {4, 14}, {5, 9},
-                                                 {6, 7400}}));
+    EXPECT_EQ(count,
+              (std::map<int, std::size_t>{{1, 50}, {2, 31}, {3, 22}, {4, 14}, {5, 9}, {6, 7400}}));
 }
 
 TEST(ParticleIo, ReadsPeersDataFile) {
@@ -125,7 +125,7 @@ Velocities
     EXPECT_EQ(f.particles[0].id, 3u);
     EXPECT_EQ(f.particles[0].radius, 1.5e-6);
     EXPECT_EQ(f.particles[1].position.x, 4e-6); // image flags ignored: positions as stored
-    EXPECT_DOUBLE_EQ(*f.lx, 3e-5); // 2e-5 - (-1e-5)
+    EXPECT_DOUBLE_EQ(*f.lx, 3e-5);              // 2e-5 - (-1e-5)
     EXPECT_EQ(*f.xlo, -1e-5);
     EXPECT_EQ(*f.ly, 4e-5);
 }
@@ -242,8 +242,8 @@ TEST(ParticleIo, ErrorsNameFileAndLine) {
     EXPECT_NE(msg.find("e.data:5:"), std::string::npos) << msg;
     EXPECT_NE(msg.find("atom_style 'atomic'"), std::string::npos) << msg;
 
-    msg = error_of(
-        write_text(dir / "f.data", "title\n\n2 atoms\n\nAtoms\n\n1 1 1e-6 1000 0 0 0\n"));
+    msg =
+        error_of(write_text(dir / "f.data", "title\n\n2 atoms\n\nAtoms\n\n1 1 1e-6 1000 0 0 0\n"));
     EXPECT_NE(msg.find("header says 2 atoms"), std::string::npos) << msg;
 
     msg = error_of(write_text(dir / "g.dump", "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n3\n"
@@ -287,7 +287,8 @@ ITEM: ATOMS id type x y z radius
 2 2 2e-5 2e-5 2e-5 7.5e-7
 )");
     std::vector<drydem::DumpSnapshot> frames;
-    drydem::for_each_dump_frame(file, [&](drydem::DumpSnapshot&& d) { frames.push_back(std::move(d)); });
+    drydem::for_each_dump_frame(file,
+                                [&](drydem::DumpSnapshot&& d) { frames.push_back(std::move(d)); });
     ASSERT_EQ(frames.size(), 2u);
     EXPECT_EQ(frames[0].step, 0);
     EXPECT_EQ(frames[1].step, 100);
@@ -298,6 +299,7 @@ ITEM: ATOMS id type x y z radius
     const auto last = read_particles(file);
     ASSERT_EQ(last.particles.size(), 2u);
     EXPECT_DOUBLE_EQ(last.particles[1].position.z, frames[1].particles.particles[1].position.z);
-    EXPECT_THROW(drydem::for_each_dump_frame(write_text(dir / "x.csv", "id,type,x_m\n"), [](drydem::DumpSnapshot&&) {}),
+    EXPECT_THROW(drydem::for_each_dump_frame(write_text(dir / "x.csv", "id,type,x_m\n"),
+                                             [](drydem::DumpSnapshot&&) {}),
                  drydem::InputError);
 }

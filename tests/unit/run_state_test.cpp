@@ -29,7 +29,8 @@ std::vector<unsigned char> saved(const std::function<void(StateFields&)>& visit)
     return w.bytes();
 }
 
-std::string load_error(const std::vector<unsigned char>& bytes, const std::function<void(StateFields&)>& visit) {
+std::string load_error(const std::vector<unsigned char>& bytes,
+                       const std::function<void(StateFields&)>& visit) {
     try {
         BinaryReader r(bytes, "state.bin");
         StateFields f(r, "state.bin");

@@ -16,20 +16,20 @@ void expect_rel(double actual, double expected, double rel = 1e-9) {
 // M-7 table for the default (20.1 mg/cm2) configuration.
 TEST(Scaling, M7Table) {
     const ScaledParameters s = scale_parameters(Config{});
-    expect_rel(s.gravity_scaled, 9.81e6);            // g k / b
+    expect_rel(s.gravity_scaled, 9.81e6); // g k / b
     expect_rel(s.gravity_physical, 9.81);
-    expect_rel(s.drag_viscosity_scaled, 0.1801);     // η / b
+    expect_rel(s.drag_viscosity_scaled, 0.1801); // η / b
     expect_rel(s.drag_viscosity_physical, 1.801);
-    expect_rel(s.lubrication_viscosity, 1.801);      // C-17: unreduced
+    expect_rel(s.lubrication_viscosity, 1.801); // C-17: unreduced
     expect_rel(s.hamaker_cb_cb[0], 4.64e-20);
-    expect_rel(s.hamaker_cb_cb[1], 4.64e-13);        // × k
-    expect_rel(s.hamaker_ncm_cb[1], 9.5e-13);        // C-12 default
+    expect_rel(s.hamaker_cb_cb[1], 4.64e-13); // × k
+    expect_rel(s.hamaker_ncm_cb[1], 9.5e-13); // C-12 default
     expect_rel(s.hamaker_ncm_ncm[1], 2.11e-12);
-    expect_rel(s.surface_tension_scaled, 369.0);     // σ s_cap
-    expect_rel(s.zone_duration_physical, 60.0);      // 2 m at 2 m/min
+    expect_rel(s.surface_tension_scaled, 369.0); // σ s_cap
+    expect_rel(s.zone_duration_physical, 60.0);  // 2 m at 2 m/min
     expect_rel(s.zone_duration_scaled, 6e-6);
     ASSERT_EQ(s.level_speeds_scaled.size(), 2u);
-    expect_rel(s.level_speeds_scaled[0], 6.70);      // 0.670 um/s × k
+    expect_rel(s.level_speeds_scaled[0], 6.70); // 0.670 um/s × k
     expect_rel(s.level_speeds_scaled[1], 11.93);
     expect_rel(s.process_time(6e-6), 60.0);
     expect_rel(s.sim_time(75.0), 7.5e-6);
@@ -64,7 +64,8 @@ TEST(Scaling, DryingForceFieldPairTable) {
             EXPECT_NEAR(law<VanDerWaalsLaw>(*p).cutoff_gap, r_l[k], 0.0005e-6) << "class " << k;
         }
     }
-    expect_rel(law<VanDerWaalsLaw>(ff.pair_params(0, cb)).cutoff_gap, 2 * 3.25 * 0.75 / 4.0 * 1e-6); // exact
+    expect_rel(law<VanDerWaalsLaw>(ff.pair_params(0, cb)).cutoff_gap,
+               2 * 3.25 * 0.75 / 4.0 * 1e-6); // exact
     // NCM-NCM: 2.11e-12 J, 50 nm; NCM(6.50)-NCM(11.35) r_L = 4.133 um.
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 5; ++j) {

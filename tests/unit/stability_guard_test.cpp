@@ -25,7 +25,8 @@ TEST(GuardDecision, AdaptSetsTheGuardedStepNeverAboveTheCap) {
     EXPECT_LT(d.indicator, 2.0);
     EXPECT_EQ(d.action, Action::none);
     // Slow rates: the cap holds.
-    EXPECT_DOUBLE_EQ(guard_decision(GuardPolicy::adapt, 1e-12, 1e-9, estimate(1.0, 1.0), 0.0).time_step, 1e-9);
+    EXPECT_DOUBLE_EQ(
+        guard_decision(GuardPolicy::adapt, 1e-12, 1e-9, estimate(1.0, 1.0), 0.0).time_step, 1e-9);
 }
 
 TEST(GuardDecision, RefuseAndWarnKeepTheStepAndFlagTheBound) {

@@ -59,12 +59,14 @@ TEST(Study, ShrinkageRateFactorsMultiplyThePlanAndGroupTheStatistics) {
         (void)plan_study(c, {0.03}, 1);
         FAIL() << "factors with the dryer model were accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("study.shrinkage_rate_factors"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("study.shrinkage_rate_factors"), std::string::npos)
+            << e.what();
     }
 }
 
 TEST(Study, StatisticsAreMeanAndSampleStdOverCompletedRuns) {
-    auto row = [](double l, std::uint64_t seed, const char* status, double h, double rho, double eps) {
+    auto row = [](double l, std::uint64_t seed, const char* status, double h, double rho,
+                  double eps) {
         StudyRow r;
         r.c = {l, seed, "x"};
         r.status = status;
@@ -75,11 +77,10 @@ TEST(Study, StatisticsAreMeanAndSampleStdOverCompletedRuns) {
         }
         return r;
     };
-    const std::vector<StudyRow> rows = {row(0.201, 1, "completed", 83.0, 2.40, 0.44),
-                                        row(0.201, 2, "completed", 85.0, 2.38, 0.45),
-                                        row(0.201, 3, "completed", 84.0, 2.39, 0.46),
-                                        row(0.252, 1, "failed", 0, 0, 0),
-                                        row(0.252, 2, "completed", 105.0, 2.41, 0.43)};
+    const std::vector<StudyRow> rows = {
+        row(0.201, 1, "completed", 83.0, 2.40, 0.44), row(0.201, 2, "completed", 85.0, 2.38, 0.45),
+        row(0.201, 3, "completed", 84.0, 2.39, 0.46), row(0.252, 1, "failed", 0, 0, 0),
+        row(0.252, 2, "completed", 105.0, 2.41, 0.43)};
     const auto s = study_statistics(rows);
     ASSERT_EQ(s.size(), 2u);
     EXPECT_DOUBLE_EQ(s[0].areal_loading_mg_cm2, 20.1);
@@ -151,6 +152,7 @@ TEST(Study, RowsCarryTheRunsTransportAndBinderNumbers) {
     std::string header, row;
     std::getline(csv, header);
     std::getline(csv, row);
-    EXPECT_NE(header.find("tortuosity_through_plane,tortuosity_in_plane,bruggeman_exponent"), std::string::npos);
+    EXPECT_NE(header.find("tortuosity_through_plane,tortuosity_in_plane,bruggeman_exponent"),
+              std::string::npos);
     EXPECT_NE(row.find(",2.5,1.8,,3.25,1,0.75"), std::string::npos) << row;
 }

@@ -81,7 +81,7 @@ TEST(Units, NonDecimalFactors) {
 TEST(Units, BareNumbersAreSi) {
     EXPECT_EQ(q("2.5", D::length), 2.5);
     EXPECT_EQ(q("2.5", D::dimensionless), 2.5);
-    EXPECT_EQ(q("0.7", D::angle), 0.7);   // radians
+    EXPECT_EQ(q("0.7", D::angle), 0.7);         // radians
     EXPECT_EQ(q("300", D::temperature), 300.0); // kelvin
     EXPECT_EQ(q("+6.5e-6", D::length), 6.5e-6);
     EXPECT_EQ(q(".5", D::dimensionless), 0.5);
@@ -107,9 +107,10 @@ TEST(Units, DimensionMismatchNamesKeyValueAndWhatIsAllowed) {
 }
 
 TEST(Units, MalformedValuesThrow) {
-    for (const char* bad : {"abc um", "", "   ", "um", "6.5 foo", "6.5 m^", "6.5 m^x", "6.5 m/",
-                            "6.5 (m", "6.5 m)", "nan", "inf m", "1e400 m", "6.5 m 2", "6.5 m 1", "1..2 m",
-                            "80 degC/s", "80 degC^2", "80 degC K", "6.5 um,"}) {
+    for (const char* bad :
+         {"abc um",  "",       "   ",       "um",        "6.5 foo",   "6.5 m^",  "6.5 m^x",
+          "6.5 m/",  "6.5 (m", "6.5 m)",    "nan",       "inf m",     "1e400 m", "6.5 m 2",
+          "6.5 m 1", "1..2 m", "80 degC/s", "80 degC^2", "80 degC K", "6.5 um,"}) {
         const auto msg = error_of(bad, D::length, "film.particle_diameter");
         EXPECT_FALSE(msg.empty()) << "accepted: '" << bad << "'";
         EXPECT_NE(msg.find("film.particle_diameter"), std::string::npos) << msg;

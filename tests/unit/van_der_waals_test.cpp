@@ -90,8 +90,8 @@ TEST(VanDerWaals, RigidBodyMotionChangesNothing) {
     const drydem::Vec3 v_i = v_j + drydem::cross(omega, -d * n);
     const auto moving = drydem::van_der_waals(
         drydem::make_pair_geometry(d * n, d, r, r, 2e-15, 2e-15, v_i, v_j, omega, omega), p);
-    const auto resting =
-        drydem::van_der_waals(drydem::make_pair_geometry(d * n, d, r, r, 2e-15, 2e-15, {}, {}, {}, {}), p);
+    const auto resting = drydem::van_der_waals(
+        drydem::make_pair_geometry(d * n, d, r, r, 2e-15, 2e-15, {}, {}, {}, {}), p);
     EXPECT_EQ(moving.force_i.x, resting.force_i.x);
     EXPECT_EQ(moving.force_i.y, resting.force_i.y);
     EXPECT_EQ(moving.force_i.z, resting.force_i.z);

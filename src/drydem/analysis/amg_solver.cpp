@@ -84,7 +84,8 @@ void fill_matrix(HypreSystem& s, const CsrMatrix& A) {
     HYPRE_IJMatrixSetRowSizes(s.A, ncols.data());
     HYPRE_IJMatrixInitialize(s.A);
     const std::vector<HYPRE_BigInt> rows = all_rows(A.n);
-    static_assert(sizeof(HYPRE_BigInt) == sizeof(int), "hypre built with 32-bit indices (libhypre-dev)");
+    static_assert(sizeof(HYPRE_BigInt) == sizeof(int),
+                  "hypre built with 32-bit indices (libhypre-dev)");
     HYPRE_IJMatrixSetValues(s.A, A.n, ncols.data(), rows.data(), A.cols, A.values);
     HYPRE_IJMatrixAssemble(s.A);
 }
@@ -113,11 +114,12 @@ void configure(HypreSystem& s, double tolerance, int max_iterations) {
 
 } // namespace
 
-AmgSolve solve_amg_pcg(const CsrMatrix& A, const std::vector<double>& b, const std::vector<double>& guess,
-                       double tolerance, int max_iterations) {
+AmgSolve solve_amg_pcg(const CsrMatrix& A, const std::vector<double>& b,
+                       const std::vector<double>& guess, double tolerance, int max_iterations) {
     if (A.n < 1 || b.size() != std::size_t(A.n) || guess.size() != std::size_t(A.n))
-        throw InputError(fmt::format("AMG solve: {} unknowns with {} right-hand sides and {} guesses", A.n,
-                                     b.size(), guess.size()));
+        throw InputError(
+            fmt::format("AMG solve: {} unknowns with {} right-hand sides and {} guesses", A.n,
+                        b.size(), guess.size()));
     start_amg_solver();
     const std::size_t heap0 = heap_in_use();
     HypreSystem s;

@@ -25,9 +25,10 @@ struct CsrMatrix {
 struct AmgSolve {
     std::vector<double> x;
     int iterations = 0;
-    double residual = 0.0;          ///< final |b − A x| / |b| (two-norm)
+    double residual = 0.0; ///< final |b − A x| / |b| (two-norm)
     bool converged = false;
-    std::size_t memory_bytes = 0;   ///< heap held by hypre at the end: matrix copy, hierarchy, vectors
+    std::size_t memory_bytes =
+        0; ///< heap held by hypre at the end: matrix copy, hierarchy, vectors
 };
 
 /// Starts MPI (one rank, for hypre) and hypre once per process; solve_amg_pcg calls it too. Call it
@@ -36,6 +37,7 @@ void start_amg_solver();
 
 /// Solves A x = b from the first guess to the relative residual `tolerance`.
 [[nodiscard]] AmgSolve solve_amg_pcg(const CsrMatrix& A, const std::vector<double>& b,
-                                     const std::vector<double>& guess, double tolerance, int max_iterations);
+                                     const std::vector<double>& guess, double tolerance,
+                                     int max_iterations);
 
 } // namespace drydem::analysis

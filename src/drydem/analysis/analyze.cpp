@@ -25,8 +25,8 @@ double since(std::chrono::steady_clock::time_point& t) {
 }
 
 /// Volume histogram of diameters 2 sqrt(r²) voxels over the pore voxels below k_top.
-std::vector<double> diameter_histogram(const VoxelGrid& g, const std::vector<std::uint16_t>& r2, int k_top,
-                                       double& unreached) {
+std::vector<double> diameter_histogram(const VoxelGrid& g, const std::vector<std::uint16_t>& r2,
+                                       int k_top, double& unreached) {
     std::vector<double> bins(520, 0.0);
     std::vector<std::uint64_t> by_r2(65536, 0);
     std::uint64_t pores = 0, zero = 0;
@@ -34,8 +34,10 @@ std::vector<double> diameter_histogram(const VoxelGrid& g, const std::vector<std
     for (std::size_t idx = 0; idx < n; ++idx) {
         if (g.label[idx] != label_pore) continue;
         ++pores;
-        if (r2[idx] == 0) ++zero;
-        else ++by_r2[r2[idx]];
+        if (r2[idx] == 0)
+            ++zero;
+        else
+            ++by_r2[r2[idx]];
     }
     for (std::size_t v = 1; v < by_r2.size(); ++v)
         if (by_r2[v]) bins[std::size_t(2.0 * std::sqrt(double(v)))] += double(by_r2[v]);
@@ -53,7 +55,8 @@ namespace {
 /// Binder migration (paper Eq. 1) over the run's drying history, and the same film dried faster.
 template <class Say>
 void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_top, Say&& say) {
-    DryingHistory h = read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
+    DryingHistory h =
+        read_drying_history(o.timeseries, coating_top, o.profile_dz, r.profiles.pore_total);
     if (!o.dump.empty() && std::filesystem::exists(o.dump))
         h.frames = porosity_frames(o.dump, h, o.dump_defaults, o.dump_rule);
     BinderParams bp = o.binder;
@@ -63,7 +66,8 @@ void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_
         if (alpha >= 1.0 && alpha <= 5.0) bp.bruggeman = alpha;
     }
     r.binder = binder_migration(h, bp);
-    say(fmt::format("binder migration: Pe {:.3g}, binder at the substrate (bottom 10 %) {:.3f}, top 10 % {:.3f} "
+    say(fmt::format("binder migration: Pe {:.3g}, binder at the substrate (bottom 10 %) {:.3f}, "
+                    "top 10 % {:.3f} "
                     "of the mean, {} steps, {}",
                     r.binder->peclet, r.binder->bottom10, r.binder->top10, r.binder->steps,
                     r.binder->porosity_frames > 0
@@ -73,13 +77,16 @@ void analyze_binder(AnalysisResult& r, const AnalysisOptions& o, double coating_
     for (double f : o.binder_rate_factors) {
         DryingHistory hf = h;
         for (double& t : hf.time) t = h.time.front() + (t - h.time.front()) / f;
-        for (PorosityFrame& fr : hf.frames) fr.time = h.time.front() + (fr.time - h.time.front()) / f;
+        for (PorosityFrame& fr : hf.frames)
+            fr.time = h.time.front() + (fr.time - h.time.front()) / f;
         r.binder_rates.emplace_back(f, binder_migration(hf, bp));
     }
 }
 
 /// This machine's physical memory [bytes]; 0 where unknown.
-double machine_memory_bytes() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE)); }
+double machine_memory_bytes() {
+    return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+}
 
 /// Refuse what this machine cannot hold instead of dying in the allocation.
 void check_voxel_memory(const Structure& s, const AnalysisOptions& o, double top) {
@@ -87,18 +94,20 @@ void check_voxel_memory(const Structure& s, const AnalysisOptions& o, double top
     const double need = voxel_analysis_bytes * voxels;
     const double have = machine_memory_bytes();
     if (voxels >= 4.0e9 || (have > 0.0 && need > 0.8 * have))
-        throw InputError(fmt::format(
-            "voxel size {:.3g} um: the voxel image has {:.3g} voxels and needs about {:.1f} GB, more than this "
-            "machine's {:.1f} GB allow (and at most 4e9 voxels); choose a coarser voxel size (analysis.voxel_size "
-            "or --voxel, e.g. {:.2g} um)",
-            o.voxel * 1e6, voxels, need / 1e9, have / 1e9, o.voxel * 1e6 * std::cbrt(need / (0.5 * have)) + 1e-3));
+        throw InputError(fmt::format("voxel size {:.3g} um: the voxel image has {:.3g} voxels and "
+                                     "needs about {:.1f} GB, more than this "
+                                     "machine's {:.1f} GB allow (and at most 4e9 voxels); choose a "
+                                     "coarser voxel size (analysis.voxel_size "
+                                     "or --voxel, e.g. {:.2g} um)",
+                                     o.voxel * 1e6, voxels, need / 1e9, have / 1e9,
+                                     o.voxel * 1e6 * std::cbrt(need / (0.5 * have)) + 1e-3));
 }
 
 /// Pore sizes of the coating below the pore top: local thickness and simulated mercury intrusion,
 /// with their medians and the peak.
 template <class Say>
-void pore_sizes(AnalysisResult& r, VoxelGrid& g, const AnalysisOptions& o, std::chrono::steady_clock::time_point t,
-                Say&& say) {
+void pore_sizes(AnalysisResult& r, VoxelGrid& g, const AnalysisOptions& o,
+                std::chrono::steady_clock::time_point t, Say&& say) {
     // The pore sizes of the coating: the layers below the pore top, open at that plane (where the
     // mercury enters). The rough surface above is no pore space of the coating.
     VoxelGrid owned;
@@ -122,8 +131,8 @@ void pore_sizes(AnalysisResult& r, VoxelGrid& g, const AnalysisOptions& o, std::
     const std::vector<std::uint16_t> d2 = squared_distance_to_solid(pg);
     r.seconds.push_back(since(t));
     say(fmt::format("distance transform in {:.1f} s", r.seconds.back()));
-    r.distance_saturated =
-        std::any_of(d2.begin(), d2.end(), [](std::uint16_t v) { return v >= squared_distance_cap; });
+    r.distance_saturated = std::any_of(d2.begin(), d2.end(),
+                                       [](std::uint16_t v) { return v >= squared_distance_cap; });
     std::vector<std::uint16_t> levels = invasion_levels(pg, d2);
     r.seconds.push_back(since(t));
     say(fmt::format("invasion from the top in {:.1f} s", r.seconds.back()));
@@ -153,7 +162,8 @@ void pore_sizes(AnalysisResult& r, VoxelGrid& g, const AnalysisOptions& o, std::
         double acc = 0.0;
         for (std::size_t m = 0; m < h.size(); ++m) {
             if (acc + h[m] >= 0.5 * total && h[m] > 0.0)
-                return (double(m) + (0.5 * total - acc) / h[m]) * r.psd.bin; // linear within the bin
+                return (double(m) + (0.5 * total - acc) / h[m]) *
+                       r.psd.bin; // linear within the bin
             acc += h[m];
         }
         return 0.0;
@@ -164,7 +174,8 @@ void pore_sizes(AnalysisResult& r, VoxelGrid& g, const AnalysisOptions& o, std::
 
 /// The voxel image at analysis.voxel_size: porosity split, chord lengths, pore sizes.
 template <class Say>
-void voxel_pipeline(AnalysisResult& r, const Structure& s, const AnalysisOptions& o, double top, Say&& say) {
+void voxel_pipeline(AnalysisResult& r, const Structure& s, const AnalysisOptions& o, double top,
+                    Say&& say) {
     auto t = std::chrono::steady_clock::now();
     r.voxelized = true;
     VoxelGrid g = voxelize(s, o.voxel, top);
@@ -173,8 +184,8 @@ void voxel_pipeline(AnalysisResult& r, const Structure& s, const AnalysisOptions
     r.nz = g.nz;
     r.voxel = g.az;
     r.seconds.push_back(since(t));
-    say(fmt::format("voxel image {} x {} x {} ({:.3g} voxels, {:.3g} um) in {:.1f} s", g.nx, g.ny, g.nz,
-                    double(g.size()), g.az * 1e6, r.seconds.back()));
+    say(fmt::format("voxel image {} x {} x {} ({:.3g} voxels, {:.3g} um) in {:.1f} s", g.nx, g.ny,
+                    g.nz, double(g.size()), g.az * 1e6, r.seconds.back()));
     r.pore_top = o.pore_top == "highest" ? top : r.bulk.thickness_half_solid;
     r.pore_top_layer = std::clamp(int(std::lround(r.pore_top / g.az)), 1, g.nz);
     {
@@ -184,7 +195,8 @@ void voxel_pipeline(AnalysisResult& r, const Structure& s, const AnalysisOptions
         r.voxel_porosity = double(counts[0]) / double(n);
         r.voxel_ncm_fraction = double(counts[1]) / double(n);
         r.voxel_cb_fraction = double(counts[2]) / double(n);
-        r.porosity_with_cb_pores = r.voxel_porosity + s.formulation.cb_porosity * r.voxel_cb_fraction;
+        r.porosity_with_cb_pores =
+            r.voxel_porosity + s.formulation.cb_porosity * r.voxel_cb_fraction;
     }
     r.chords = chord_lengths(g, r.pore_top_layer);
     r.seconds.push_back(since(t));
@@ -209,9 +221,11 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     auto say = [&](const std::string& m) {
         if (o.log) o.log(m);
     };
-    if (!(o.profile_dz > 0.0)) throw InputError(fmt::format("profile slab width {} m: must be positive", o.profile_dz));
+    if (!(o.profile_dz > 0.0))
+        throw InputError(fmt::format("profile slab width {} m: must be positive", o.profile_dz));
     if (o.pore_top != "half_solid" && o.pore_top != "highest")
-        throw InputError(fmt::format("pore top '{}': allowed are 'half_solid' and 'highest'", o.pore_top));
+        throw InputError(
+            fmt::format("pore top '{}': allowed are 'half_solid' and 'highest'", o.pore_top));
     AnalysisResult r;
     const double top = highest_top(s);
     r.profiles = volume_fraction_profiles(s, o.profile_dz, top);
@@ -238,7 +252,8 @@ AnalysisResult analyze_structure(const Structure& s, const AnalysisOptions& o) {
     };
     const bool voxels = o.voxel > 0.0;
     if (voxels) check_voxel_memory(s, o, top);
-    const bool together = voxels && !o.transport.voxels.empty() && fit_together(s, o, top, coating_top);
+    const bool together =
+        voxels && !o.transport.voxels.empty() && fit_together(s, o, top, coating_top);
     std::future<void> background;
     if (together) {
         start_amg_solver(); // MPI starts in this thread

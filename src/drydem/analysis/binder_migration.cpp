@@ -31,7 +31,8 @@ struct Level {
 double consolidation_time(const DryingHistory& h, double late_rate) {
     for (std::size_t k = 1; k < h.time.size(); ++k)
         if (h.liquid_level[k] <= h.final_height && h.liquid_level[k - 1] > h.final_height) {
-            const double w = (h.liquid_level[k - 1] - h.final_height) / (h.liquid_level[k - 1] - h.liquid_level[k]);
+            const double w = (h.liquid_level[k - 1] - h.final_height) /
+                             (h.liquid_level[k - 1] - h.liquid_level[k]);
             return h.time[k - 1] + w * (h.time[k] - h.time[k - 1]);
         }
     if (h.liquid_level.front() <= h.final_height) return h.time.front();
@@ -44,7 +45,8 @@ namespace {
 
 /// A slab profile (slabs of dz from z = 0) averaged over each of the n cells of [0, height]; cells
 /// above the profile's top are pure liquid (1).
-std::vector<double> cell_average(const std::vector<double>& profile, double dz, double height, int n) {
+std::vector<double> cell_average(const std::vector<double>& profile, double dz, double height,
+                                 int n) {
     const double dxi = 1.0 / n;
     std::vector<double> eps(std::size_t(n), 0.0);
     for (int i = 0; i < n; ++i) {
@@ -66,7 +68,8 @@ std::vector<double> cell_average(const std::vector<double>& profile, double dz, 
 /// film's solid volume. Without frames: the affine compression of the final film.
 class ShrinkageSolids {
 public:
-    ShrinkageSolids(const DryingHistory& h, const std::vector<double>& eps, double consolidation, int n)
+    ShrinkageSolids(const DryingHistory& h, const std::vector<double>& eps, double consolidation,
+                    int n)
         : n_(n), height_f_(h.final_height) {
         for (double e : eps) solid_volume_ += (1.0 - e) * h.final_height / n;
         for (const PorosityFrame& f : h.frames) {
@@ -87,18 +90,23 @@ public:
     [[nodiscard]] int frames() const { return frames_; }
 
     /// θ = 1 − φ_s per cell at time t for a film of height H (> H_f).
-    void solvent(double t, double height, const std::vector<double>& eps, std::vector<double>& theta) const {
+    void solvent(double t, double height, const std::vector<double>& eps,
+                 std::vector<double>& theta) const {
         if (frames_ == 0) {
-            for (int i = 0; i < n_; ++i) theta[std::size_t(i)] = 1.0 - (1.0 - eps[std::size_t(i)]) * height_f_ / height;
+            for (int i = 0; i < n_; ++i)
+                theta[std::size_t(i)] = 1.0 - (1.0 - eps[std::size_t(i)]) * height_f_ / height;
             return;
         }
         const auto it = std::upper_bound(times_.begin(), times_.end(), t);
-        const std::size_t k1 = std::min<std::size_t>(std::size_t(it - times_.begin()), times_.size() - 1);
+        const std::size_t k1 =
+            std::min<std::size_t>(std::size_t(it - times_.begin()), times_.size() - 1);
         const std::size_t k0 = k1 == 0 ? 0 : k1 - 1;
-        const double w = k1 == k0 ? 0.0 : std::clamp((t - times_[k0]) / (times_[k1] - times_[k0]), 0.0, 1.0);
+        const double w =
+            k1 == k0 ? 0.0 : std::clamp((t - times_[k0]) / (times_[k1] - times_[k0]), 0.0, 1.0);
         double volume = 0.0;
         for (int i = 0; i < n_; ++i) {
-            const double phi = (1.0 - w) * solids_[k0][std::size_t(i)] + w * solids_[k1][std::size_t(i)];
+            const double phi =
+                (1.0 - w) * solids_[k0][std::size_t(i)] + w * solids_[k1][std::size_t(i)];
             theta[std::size_t(i)] = phi;
             volume += phi * height / n_;
         }
@@ -116,8 +124,9 @@ private:
 
 /// Implicit diffusion of the dissolved binder over one step: solves, for the cell concentrations c,
 /// (θ₁ H₁ Δξ) c - Δt ∂/∂z (D₀ θ^α ∂c/∂z) = r (the convected amounts) with the Thomas algorithm.
-void diffuse(const std::vector<double>& th1, double H1, double dt, const BinderParams& p, std::vector<double>& lo,
-             std::vector<double>& di, std::vector<double>& up, std::vector<double>& r, std::vector<double>& c) {
+void diffuse(const std::vector<double>& th1, double H1, double dt, const BinderParams& p,
+             std::vector<double>& lo, std::vector<double>& di, std::vector<double>& up,
+             std::vector<double>& r, std::vector<double>& c) {
     const int n = p.cells;
     const double dxi = 1.0 / n, alpha = p.bruggeman;
     const double dz = H1 * dxi;
@@ -141,12 +150,13 @@ void diffuse(const std::vector<double>& th1, double H1, double dt, const BinderP
     }
     c[std::size_t(n) - 1] = r[std::size_t(n) - 1] / di[std::size_t(n) - 1];
     for (int i = n - 2; i >= 0; --i)
-        c[std::size_t(i)] = (r[std::size_t(i)] - up[std::size_t(i)] * c[std::size_t(i) + 1]) / di[std::size_t(i)];
+        c[std::size_t(i)] =
+            (r[std::size_t(i)] - up[std::size_t(i)] * c[std::size_t(i) + 1]) / di[std::size_t(i)];
 }
 
 /// The profile normalised by its mean, the bottom and top tenths, the evaporation rate and Pe.
-void summarize(BinderProfile& out, const std::vector<double>& m, double mass, double Hf, const DryingHistory& h,
-               double h_start, double late, const BinderParams& p) {
+void summarize(BinderProfile& out, const std::vector<double>& m, double mass, double Hf,
+               const DryingHistory& h, double h_start, double late, const BinderParams& p) {
     const int n = p.cells;
     const double dxi = 1.0 / n;
     out.z.resize(std::size_t(n));
@@ -170,13 +180,22 @@ void summarize(BinderProfile& out, const std::vector<double>& m, double mass, do
 }
 } // namespace
 
-BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
+/// InputError for a history or parameters the model cannot run on.
+static void check_binder_inputs(const DryingHistory& h, const BinderParams& p) {
     if (h.time.size() < 2 || h.time.size() != h.liquid_level.size())
-        throw InputError("binder migration: the history needs at least two (time, liquid level) rows");
+        throw InputError(
+            "binder migration: the history needs at least two (time, liquid level) rows");
     if (!(h.final_height > 0.0) || !(h.dz > 0.0) || h.porosity.empty())
-        throw InputError("binder migration: final height, slab width and porosity profile must be given");
-    if (!(p.diffusivity >= 0.0) || p.cells < 4 || !(p.residual_saturation > 0.0 && p.residual_saturation < 1.0))
-        throw InputError("binder migration: diffusivity >= 0, cells >= 4, residual saturation in (0, 1)");
+        throw InputError(
+            "binder migration: final height, slab width and porosity profile must be given");
+    if (!(p.diffusivity >= 0.0) || p.cells < 4 ||
+        !(p.residual_saturation > 0.0 && p.residual_saturation < 1.0))
+        throw InputError(
+            "binder migration: diffusivity >= 0, cells >= 4, residual saturation in (0, 1)");
+}
+
+BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
+    check_binder_inputs(h, p);
     const int n = p.cells;
     const double Hf = h.final_height, dxi = 1.0 / n;
     const std::vector<double> eps = cell_average(h.porosity, h.dz, Hf, n);
@@ -185,8 +204,10 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
 
     // The level after the run: its last descent rate, else the mean shrinkage rate.
     const std::size_t last = h.time.size() - 1;
-    double late = (h.liquid_level[last] - h.liquid_level[last - 1]) / (h.time[last] - h.time[last - 1]);
-    const double mean_rate = (h.liquid_level[last] - h.liquid_level[0]) / (h.time[last] - h.time[0]);
+    double late =
+        (h.liquid_level[last] - h.liquid_level[last - 1]) / (h.time[last] - h.time[last - 1]);
+    const double mean_rate =
+        (h.liquid_level[last] - h.liquid_level[0]) / (h.time[last] - h.time[0]);
     if (!(late < 0.0)) late = mean_rate;
     if (!(late < 0.0)) throw InputError("binder migration: the liquid level does not descend");
     const Level level{h, late};
@@ -231,7 +252,8 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
             G[0] = 0.0;
             for (int i = 0; i < n; ++i)
                 G[std::size_t(i) + 1] =
-                    G[std::size_t(i)] - (th1[std::size_t(i)] * H1 - th0[std::size_t(i)] * H0) * dxi / dt;
+                    G[std::size_t(i)] -
+                    (th1[std::size_t(i)] * H1 - th0[std::size_t(i)] * H0) * dxi / dt;
             bool ok = true;
             for (int i = 1; i < n && ok; ++i) {
                 const double g = G[std::size_t(i)];
@@ -242,7 +264,8 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
             dt *= 0.5;
         }
         // Explicit upwind convection of the dissolved binder; the top face lets only solvent out.
-        for (int i = 0; i < n; ++i) c[std::size_t(i)] = m[std::size_t(i)] / (th0[std::size_t(i)] * H0 * dxi);
+        for (int i = 0; i < n; ++i)
+            c[std::size_t(i)] = m[std::size_t(i)] / (th0[std::size_t(i)] * H0 * dxi);
         for (int i = 0; i < n; ++i) r[std::size_t(i)] = m[std::size_t(i)];
         for (int i = 1; i < n; ++i) {
             const double g = G[std::size_t(i)];
@@ -251,7 +274,8 @@ BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p) {
             r[std::size_t(i)] += flux;
         }
         diffuse(th1, H1, dt, p, lo, di, up, r, c);
-        for (int i = 0; i < n; ++i) m[std::size_t(i)] = c[std::size_t(i)] * th1[std::size_t(i)] * H1 * dxi;
+        for (int i = 0; i < n; ++i)
+            m[std::size_t(i)] = c[std::size_t(i)] * th1[std::size_t(i)] * H1 * dxi;
         if (out.consolidation_time < 0.0 && H1 <= Hf) out.consolidation_time = t + dt;
         t += dt;
         std::swap(th0, th1);
@@ -285,7 +309,8 @@ DryingHistory read_drying_history(const std::string& timeseries_csv, double fina
         }
     }
     if (col_t < 0 || col_h < 0)
-        throw InputError(fmt::format("{}: no process_time_s / liquid_level_um columns", timeseries_csv));
+        throw InputError(
+            fmt::format("{}: no process_time_s / liquid_level_um columns", timeseries_csv));
     DryingHistory h;
     h.final_height = final_height;
     h.dz = dz;
@@ -309,8 +334,9 @@ DryingHistory read_drying_history(const std::string& timeseries_csv, double fina
     return h;
 }
 
-std::vector<PorosityFrame> porosity_frames(const std::filesystem::path& dump, const DryingHistory& h,
-                                           const FileDefaults& defaults, const PhaseRule& rule) {
+std::vector<PorosityFrame> porosity_frames(const std::filesystem::path& dump,
+                                           const DryingHistory& h, const FileDefaults& defaults,
+                                           const PhaseRule& rule) {
     std::vector<PorosityFrame> frames;
     if (h.step.size() != h.time.size() || h.time.size() < 2) return frames;
     const auto at_step = [&](double step, const std::vector<double>& y) -> double {
@@ -322,7 +348,8 @@ std::vector<PorosityFrame> porosity_frames(const std::filesystem::path& dump, co
         return (1.0 - w) * y[k - 1] + w * y[k];
     };
     for_each_dump_frame(dump, [&](DumpSnapshot&& d) {
-        const double t = at_step(double(d.step), h.time), level = at_step(double(d.step), h.liquid_level);
+        const double t = at_step(double(d.step), h.time),
+                     level = at_step(double(d.step), h.liquid_level);
         if (!std::isfinite(t) || !std::isfinite(level) || !(level > h.final_height)) return;
         const Structure s = structure_from_file(d.particles, defaults, rule);
         frames.push_back({t, level, volume_fraction_profiles(s, h.dz, level).pore_total});

@@ -33,8 +33,10 @@
 namespace drydem::analysis {
 
 struct BinderParams {
-    double diffusivity = 6.5e-12;   ///< D₀ of dissolved PVDF in NMP [m²/s] (Stokes–Einstein, see docs)
-    double bruggeman = 1.5;         ///< α of D_eff = D₀ θ^(α−1) (or the film's own, from the transport solve)
+    double diffusivity =
+        6.5e-12; ///< D₀ of dissolved PVDF in NMP [m²/s] (Stokes–Einstein, see docs)
+    double bruggeman =
+        1.5; ///< α of D_eff = D₀ θ^(α−1) (or the film's own, from the transport solve)
     int cells = 200;
     /// Stop when the pores hold this fraction of their solvent: the binder is taken as immobile
     /// from there (the solution has concentrated 1/S-fold — ~5 wt% PVDF in NMP at the start, a gel
@@ -42,53 +44,57 @@ struct BinderParams {
     /// θ^(α−1) while the capillary flow F/θ grows, and the result would hinge on this cut.
     double residual_saturation = 0.2;
     double cfl = 0.4;
-    double max_step = 0.01;         ///< [s]
+    double max_step = 0.01; ///< [s]
 };
 
 /// The solvent-accessible porosity over the height of the film at one time of its shrinkage.
 struct PorosityFrame {
-    double time = 0.0;                 ///< process time [s]
-    double height = 0.0;               ///< the liquid level then, the top of the wet film [m]
-    std::vector<double> porosity;      ///< per slab of DryingHistory::dz from z = 0 up to `height`
+    double time = 0.0;            ///< process time [s]
+    double height = 0.0;          ///< the liquid level then, the top of the wet film [m]
+    std::vector<double> porosity; ///< per slab of DryingHistory::dz from z = 0 up to `height`
 };
 
 /// What the DEM run gives the model.
 struct DryingHistory {
-    std::vector<double> time;          ///< process time [s], increasing
-    std::vector<double> liquid_level;  ///< [m]
-    std::vector<double> step;          ///< the run's step at each row (empty when the file has none)
-    double final_height = 0.0;         ///< H_f [m]
-    double dz = 0.0;                   ///< slab width of the profile [m]
-    std::vector<double> porosity;      ///< ε_f per slab of the final film from z = 0 (solvent-accessible)
+    std::vector<double> time;         ///< process time [s], increasing
+    std::vector<double> liquid_level; ///< [m]
+    std::vector<double> step;         ///< the run's step at each row (empty when the file has none)
+    double final_height = 0.0;        ///< H_f [m]
+    double dz = 0.0;                  ///< slab width of the profile [m]
+    std::vector<double>
+        porosity; ///< ε_f per slab of the final film from z = 0 (solvent-accessible)
     std::vector<PorosityFrame> frames; ///< during the shrinkage, increasing time; empty: affine
 };
 
 struct BinderProfile {
-    std::vector<double> z;          ///< cell centres in the final film [m]
-    std::vector<double> binder;     ///< binder per film volume / its mean (1 = uniform)
-    double bottom10 = 0.0;          ///< mean of `binder` over the lowest 10 % of the height
-    double top10 = 0.0;             ///< ... over the highest 10 %
-    double peclet = 0.0;            ///< E H₀ / D₀ with the mean evaporation velocity of the shrinkage
-    double evaporation_rate = 0.0;  ///< mean of −dh/dt over the shrinkage [m/s]
-    double consolidation_time = 0.0;///< when h reached H_f [s]
-    double end_time = 0.0;          ///< when S reached the residual saturation [s]
-    double mass_balance = 0.0;      ///< |M_end − M_0| / M_0
+    std::vector<double> z;      ///< cell centres in the final film [m]
+    std::vector<double> binder; ///< binder per film volume / its mean (1 = uniform)
+    double bottom10 = 0.0;      ///< mean of `binder` over the lowest 10 % of the height
+    double top10 = 0.0;         ///< ... over the highest 10 %
+    double peclet = 0.0; ///< E H₀ / D₀ with the mean evaporation velocity of the shrinkage
+    double evaporation_rate = 0.0;   ///< mean of −dh/dt over the shrinkage [m/s]
+    double consolidation_time = 0.0; ///< when h reached H_f [s]
+    double end_time = 0.0;           ///< when S reached the residual saturation [s]
+    double mass_balance = 0.0;       ///< |M_end − M_0| / M_0
     int steps = 0;
-    int porosity_frames = 0;        ///< frames of the run that shaped the shrinkage (0: affine)
+    int porosity_frames = 0; ///< frames of the run that shaped the shrinkage (0: affine)
 };
 
 [[nodiscard]] BinderProfile binder_migration(const DryingHistory& h, const BinderParams& p);
 
 /// The history of a run folder: timeseries.csv (process_time_s, liquid_level_um, step), the final
 /// height H_f and the solvent-accessible porosity profile (profiles' pore_total) given by the caller.
-[[nodiscard]] DryingHistory read_drying_history(const std::string& timeseries_csv, double final_height, double dz,
+[[nodiscard]] DryingHistory read_drying_history(const std::string& timeseries_csv,
+                                                double final_height, double dz,
                                                 const std::vector<double>& porosity);
 
 /// The frames of a run's dump (snapshots/dump.lammpstrj) taken while the film shrinks, as porosity
 /// profiles (pore_total of profiles.hpp, slabs of h.dz up to the level): each frame's time and
 /// level interpolated from the history's (step, time, level) rows. Frames before the first row,
 /// after the last or with the level at or below H_f are left out; no step column, no frames.
-[[nodiscard]] std::vector<PorosityFrame> porosity_frames(const std::filesystem::path& dump, const DryingHistory& h,
-                                                         const FileDefaults& defaults, const PhaseRule& rule = {});
+[[nodiscard]] std::vector<PorosityFrame> porosity_frames(const std::filesystem::path& dump,
+                                                         const DryingHistory& h,
+                                                         const FileDefaults& defaults,
+                                                         const PhaseRule& rule = {});
 
 } // namespace drydem::analysis

@@ -15,7 +15,7 @@ struct ChordHistogram {
     std::vector<std::uint64_t> count; ///< count[n] = chords of n voxels (n ≥ 1)
     std::uint64_t open_lines = 0;     ///< lines without any solid (x, y) / runs cut at the top (z)
     [[nodiscard]] std::uint64_t chords() const;
-    [[nodiscard]] double mean_voxels() const;          ///< number-weighted mean length [voxels]
+    [[nodiscard]] double mean_voxels() const; ///< number-weighted mean length [voxels]
     [[nodiscard]] double length_weighted_mean_voxels() const;
 };
 

@@ -24,14 +24,17 @@ struct Lattice {
         : n{p.nx, p.ny, p.nz}, a{p.ax, p.ay, p.az}, periodic(p.periodic), axis(p.axis) {
         periodic[std::size_t(axis)] = false; // the two fixed faces
     }
-    [[nodiscard]] std::size_t size() const { return std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]); }
+    [[nodiscard]] std::size_t size() const {
+        return std::size_t(n[0]) * std::size_t(n[1]) * std::size_t(n[2]);
+    }
     [[nodiscard]] std::array<int, 3> coords(std::size_t idx) const {
         const int i = int(idx % std::size_t(n[0]));
         const std::size_t rest = idx / std::size_t(n[0]);
         return {i, int(rest % std::size_t(n[1])), int(rest / std::size_t(n[1]))};
     }
     [[nodiscard]] std::size_t index(const std::array<int, 3>& c) const {
-        return (std::size_t(c[2]) * std::size_t(n[1]) + std::size_t(c[1])) * std::size_t(n[0]) + std::size_t(c[0]);
+        return (std::size_t(c[2]) * std::size_t(n[1]) + std::size_t(c[1])) * std::size_t(n[0]) +
+               std::size_t(c[0]);
     }
     /// Neighbour of c one step along d in direction s (±1); false where the side is closed.
     bool neighbour(std::array<int, 3> c, int d, int s, std::size_t& out) const {
@@ -54,13 +57,15 @@ struct Lattice {
 
 void validate(const ConductionProblem& p) {
     if (p.nx < 1 || p.ny < 1 || p.nz < 1 || !(p.ax > 0.0) || !(p.ay > 0.0) || !(p.az > 0.0))
-        throw InputError(fmt::format("conduction: grid {} x {} x {} with edges {} / {} / {} m", p.nx, p.ny, p.nz,
-                                     p.ax, p.ay, p.az));
-    if (p.axis < 0 || p.axis > 2) throw InputError(fmt::format("conduction: axis {} (0, 1 or 2)", p.axis));
+        throw InputError(fmt::format("conduction: grid {} x {} x {} with edges {} / {} / {} m",
+                                     p.nx, p.ny, p.nz, p.ax, p.ay, p.az));
+    if (p.axis < 0 || p.axis > 2)
+        throw InputError(fmt::format("conduction: axis {} (0, 1 or 2)", p.axis));
     if (p.sigma.size() != std::size_t(p.nx) * std::size_t(p.ny) * std::size_t(p.nz))
         throw InputError("conduction: sigma has not one value per voxel");
     for (float s : p.sigma)
-        if (!(s >= 0.0f) || !std::isfinite(s)) throw InputError("conduction: sigma must be finite and >= 0");
+        if (!(s >= 0.0f) || !std::isfinite(s))
+            throw InputError("conduction: sigma must be finite and >= 0");
 }
 
 /// Flood fill of the conducting voxels from the layer at `layer` of the axis; sets `bit` in mask.
@@ -122,8 +127,8 @@ struct ConductionSystem {
     Eigen::VectorXd b, guess, g_in, g_out;
 };
 
-ConductionSystem assemble(const ConductionProblem& p, const Lattice& L, const std::vector<std::uint8_t>& keep,
-                          std::size_t kept) {
+ConductionSystem assemble(const ConductionProblem& p, const Lattice& L,
+                          const std::vector<std::uint8_t>& keep, std::size_t kept) {
     const std::size_t nv = L.size();
     // Unknowns in voxel order.
     std::vector<int> row_of(nv, -1);
@@ -179,10 +184,13 @@ ConductionSystem assemble(const ConductionProblem& p, const Lattice& L, const st
             diag += g_out[row];
         }
         entries[std::size_t(m++)] = {row, diag};
-        std::sort(entries.begin(), entries.begin() + m, [](const auto& u, const auto& v) { return u.first < v.first; });
+        std::sort(entries.begin(), entries.begin() + m,
+                  [](const auto& u, const auto& v) { return u.first < v.first; });
         for (int e = 0; e < m; ++e) {
-            if (!inner.empty() && int(inner.size()) > outer[std::size_t(row)] && inner.back() == entries[std::size_t(e)].first)
-                values.back() += entries[std::size_t(e)].second; // a periodic side of two voxels: both faces
+            if (!inner.empty() && int(inner.size()) > outer[std::size_t(row)] &&
+                inner.back() == entries[std::size_t(e)].first)
+                values.back() +=
+                    entries[std::size_t(e)].second; // a periodic side of two voxels: both faces
             else {
                 inner.push_back(entries[std::size_t(e)].first);
                 values.push_back(entries[std::size_t(e)].second);
@@ -217,7 +225,8 @@ ConductionResult solve_conduction(const ConductionProblem& p) {
     };
     if (!r.percolates) return finish();
     if (kept >= std::size_t(std::numeric_limits<int>::max() / 8))
-        throw InputError(fmt::format("conduction: {} unknowns, too many for one solve; coarsen the voxels", kept));
+        throw InputError(fmt::format(
+            "conduction: {} unknowns, too many for one solve; coarsen the voxels", kept));
 
     ConductionSystem sys = assemble(p, L, keep, kept);
     const int n = sys.n;
@@ -234,8 +243,8 @@ ConductionResult solve_conduction(const ConductionProblem& p) {
     if (p.preconditioner == Preconditioner::amg) {
         const CsrMatrix csr{n, outer.data(), inner.data(), values.data()};
         AmgSolve amg = solve_amg_pcg(csr, std::vector<double>(b.data(), b.data() + n),
-                                     std::vector<double>(guess.data(), guess.data() + n), p.tolerance,
-                                     p.max_iterations);
+                                     std::vector<double>(guess.data(), guess.data() + n),
+                                     p.tolerance, p.max_iterations);
         phi = Eigen::Map<const Eigen::VectorXd>(amg.x.data(), n);
         r.iterations = amg.iterations;
         r.residual = amg.residual;
@@ -245,7 +254,9 @@ ConductionResult solve_conduction(const ConductionProblem& p) {
     } else {
         // Eigen's incomplete Cholesky (tried) halved Jacobi's iterations, but its factorization
         // cost 10-20x a whole Jacobi solve on the pores (measured on the tiny film at 0.4 um).
-        Eigen::ConjugateGradient<ColMat, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
+        Eigen::ConjugateGradient<ColMat, Eigen::Lower | Eigen::Upper,
+                                 Eigen::DiagonalPreconditioner<double>>
+            cg;
         cg.setTolerance(p.tolerance);
         cg.setMaxIterations(p.max_iterations);
         cg.compute(A);
@@ -260,13 +271,14 @@ ConductionResult solve_conduction(const ConductionProblem& p) {
     const double i_in = g_in.dot(Eigen::VectorXd::Ones(n) - phi), i_out = g_out.dot(phi);
     r.flux_balance = i_in > 0.0 ? std::abs(i_in - i_out) / i_in : 0.0;
     const int e1 = (d_axis + 1) % 3, e2 = (d_axis + 2) % 3;
-    const double area = L.n[std::size_t(e1)] * L.a[std::size_t(e1)] * L.n[std::size_t(e2)] * L.a[std::size_t(e2)];
+    const double area =
+        L.n[std::size_t(e1)] * L.a[std::size_t(e1)] * L.n[std::size_t(e2)] * L.a[std::size_t(e2)];
     const double length = (last + 1) * L.a[std::size_t(d_axis)];
     r.sigma_eff = 0.5 * (i_in + i_out) / area * length; // Δφ = 1
     // masks + the matrix (CSR) + b, guess, φ, g_in, g_out + what the solver held.
     r.memory_bytes += nv * sizeof(int) + outer.size() * sizeof(int) +
-                      values.size() * (sizeof(int) + sizeof(double)) + std::size_t(n) * 5 * sizeof(double) +
-                      solver_bytes;
+                      values.size() * (sizeof(int) + sizeof(double)) +
+                      std::size_t(n) * 5 * sizeof(double) + solver_bytes;
     return finish();
 }
 

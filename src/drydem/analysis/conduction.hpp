@@ -26,26 +26,26 @@ enum class Preconditioner { amg, jacobi };
 struct ConductionProblem {
     int nx = 0, ny = 0, nz = 0;
     double ax = 0.0, ay = 0.0, az = 0.0; ///< voxel edges [m]
-    std::vector<float> sigma;           ///< per voxel, x fastest then y then z; 0 = insulating
-    int axis = 2;                       ///< direction of the applied gradient: 0 x, 1 y, 2 z
+    std::vector<float> sigma;            ///< per voxel, x fastest then y then z; 0 = insulating
+    int axis = 2;                        ///< direction of the applied gradient: 0 x, 1 y, 2 z
     std::array<bool, 3> periodic{true, true, false}; ///< side conditions of the two other axes
-    double tolerance = 1e-8;            ///< CG relative residual |b − A x| / |b|
+    double tolerance = 1e-8;                         ///< CG relative residual |b − A x| / |b|
     int max_iterations = 20000;
     Preconditioner preconditioner = Preconditioner::amg;
 };
 
 struct ConductionResult {
-    double sigma_eff = 0.0;          ///< effective conductivity along the axis [unit of σ]
-    bool percolates = false;         ///< a conducting path joins the two faces
+    double sigma_eff = 0.0;            ///< effective conductivity along the axis [unit of σ]
+    bool percolates = false;           ///< a conducting path joins the two faces
     double conducting_fraction = 0.0;  ///< voxels with σ > 0 / all voxels
     double percolating_fraction = 0.0; ///< voxels in clusters touching both faces / all voxels
-    double flux_balance = 0.0;       ///< |I_in − I_out| / I_in (conservation check)
+    double flux_balance = 0.0;         ///< |I_in − I_out| / I_in (conservation check)
     std::size_t unknowns = 0;
     int iterations = 0;
-    double residual = 0.0;           ///< CG's estimate of the relative residual
+    double residual = 0.0; ///< CG's estimate of the relative residual
     bool converged = false;
-    const char* preconditioner = "";  ///< "BoomerAMG" or "Jacobi"
-    std::size_t memory_bytes = 0;    ///< masks, matrix, vectors and the solver's own (AMG hierarchy)
+    const char* preconditioner = ""; ///< "BoomerAMG" or "Jacobi"
+    std::size_t memory_bytes = 0; ///< masks, matrix, vectors and the solver's own (AMG hierarchy)
     double seconds = 0.0;
 };
 

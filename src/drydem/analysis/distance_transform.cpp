@@ -6,8 +6,9 @@
 
 namespace drydem::analysis {
 
-void distance_transform_1d(const std::uint32_t* f, int n, bool periodic, bool solid_before, std::uint32_t absent,
-                           std::uint32_t cap, std::uint32_t* out, std::vector<double>& z, std::vector<int>& v,
+void distance_transform_1d(const std::uint32_t* f, int n, bool periodic, bool solid_before,
+                           std::uint32_t absent, std::uint32_t cap, std::uint32_t* out,
+                           std::vector<double>& z, std::vector<int>& v,
                            std::vector<std::uint32_t>& fv) {
     // Sample positions: [0, n), with the periodic images within half a period on either side
     // (the nearest image of any point is closer than n/2), and the substrate at -1.
@@ -25,7 +26,8 @@ void distance_transform_1d(const std::uint32_t* f, int n, bool periodic, bool so
         // s = ((f(q) + q²) - (f(v) + v²)) / (2q - 2v).
         while (k >= 0) {
             const double vk = v[std::size_t(k)];
-            const double s = ((fq + double(q) * q) - (double(fv[std::size_t(k)]) + vk * vk)) / (2.0 * (q - vk));
+            const double s =
+                ((fq + double(q) * q) - (double(fv[std::size_t(k)]) + vk * vk)) / (2.0 * (q - vk));
             if (s <= z[std::size_t(k)]) {
                 --k;
                 continue;
@@ -67,8 +69,9 @@ namespace {
 /// Applies the 1D transform along an axis with `stride` between samples, on tiles of `tile`
 /// lines adjacent in memory (stride 1 along x), so the gathers read whole cache lines.
 template <class Get>
-void pass(std::vector<std::uint16_t>& d, std::size_t lines_outer, std::size_t lines_inner, std::size_t outer_step,
-          int n, std::size_t stride, bool periodic, bool solid_before, Get get_input) {
+void pass(std::vector<std::uint16_t>& d, std::size_t lines_outer, std::size_t lines_inner,
+          std::size_t outer_step, int n, std::size_t stride, bool periodic, bool solid_before,
+          Get get_input) {
     constexpr std::size_t tile = 16;
     const std::uint32_t cap = squared_distance_cap;
     const std::uint32_t absent = cap; // a capped value stands for "at least cap": never the nearest
@@ -86,11 +89,14 @@ void pass(std::vector<std::uint16_t>& d, std::size_t lines_outer, std::size_t li
             const std::size_t w = std::min(tile, lines_inner - i0);
             const std::size_t base = o * outer_step + i0;
             for (int q = 0; q < n; ++q)
-                for (std::size_t l = 0; l < w; ++l) in[l * std::size_t(n) + std::size_t(q)] = get_input(base + std::size_t(q) * stride + l);
+                for (std::size_t l = 0; l < w; ++l)
+                    in[l * std::size_t(n) + std::size_t(q)] =
+                        get_input(base + std::size_t(q) * stride + l);
             for (std::size_t l = 0; l < w; ++l) {
-                distance_transform_1d(in.data() + l * std::size_t(n), n, periodic, solid_before, absent, cap,
-                                      res.data(), wz, wv, wf);
-                for (int q = 0; q < n; ++q) d[base + std::size_t(q) * stride + l] = std::uint16_t(res[std::size_t(q)]);
+                distance_transform_1d(in.data() + l * std::size_t(n), n, periodic, solid_before,
+                                      absent, cap, res.data(), wz, wv, wf);
+                for (int q = 0; q < n; ++q)
+                    d[base + std::size_t(q) * stride + l] = std::uint16_t(res[std::size_t(q)]);
             }
         }
     }
@@ -113,8 +119,10 @@ std::vector<std::uint16_t> squared_distance_to_solid(const VoxelGrid& g) {
 #pragma omp for schedule(static)
             for (std::size_t row = 0; row < ny * nz; ++row) {
                 const std::size_t base = row * nx;
-                for (std::size_t i = 0; i < nx; ++i) in[i] = g.label[base + i] != label_pore ? 0u : cap;
-                distance_transform_1d(in.data(), g.nx, true, false, cap, cap, res.data(), wz, wv, wf);
+                for (std::size_t i = 0; i < nx; ++i)
+                    in[i] = g.label[base + i] != label_pore ? 0u : cap;
+                distance_transform_1d(in.data(), g.nx, true, false, cap, cap, res.data(), wz, wv,
+                                      wf);
                 for (std::size_t i = 0; i < nx; ++i) d[base + i] = std::uint16_t(res[i]);
             }
         }

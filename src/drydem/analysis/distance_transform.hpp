@@ -21,8 +21,9 @@ inline constexpr std::uint32_t squared_distance_cap = 65535;
 /// 1D squared distance transform of a sampled function (exposed for tests): out[q] =
 /// min_p (q - p)² + f[p] over p with f[p] < `absent`; `periodic` takes the images p ± n as well,
 /// `solid_before` adds a zero at p = -1. Results at or above `cap` are stored as `cap`.
-void distance_transform_1d(const std::uint32_t* f, int n, bool periodic, bool solid_before, std::uint32_t absent,
-                           std::uint32_t cap, std::uint32_t* out, std::vector<double>& work_z,
-                           std::vector<int>& work_v, std::vector<std::uint32_t>& work_f);
+void distance_transform_1d(const std::uint32_t* f, int n, bool periodic, bool solid_before,
+                           std::uint32_t absent, std::uint32_t cap, std::uint32_t* out,
+                           std::vector<double>& work_z, std::vector<int>& work_v,
+                           std::vector<std::uint32_t>& work_f);
 
 } // namespace drydem::analysis

@@ -16,11 +16,14 @@ OverlapStats summarise(std::vector<double>& rel, double lens) {
     o.lens_volume = lens;
     if (rel.empty()) return o;
     std::sort(rel.begin(), rel.end());
-    const auto rank = [&](double q) { return rel[std::size_t(std::ceil(q * double(rel.size()))) - 1]; };
+    const auto rank = [&](double q) {
+        return rel[std::size_t(std::ceil(q * double(rel.size()))) - 1];
+    };
     double sum = 0.0;
     for (double x : rel) sum += x;
     o.mean = sum / double(rel.size());
-    o.median = rel.size() % 2 ? rel[rel.size() / 2] : 0.5 * (rel[rel.size() / 2 - 1] + rel[rel.size() / 2]);
+    o.median = rel.size() % 2 ? rel[rel.size() / 2]
+                              : 0.5 * (rel[rel.size() / 2 - 1] + rel[rel.size() / 2]);
     o.p99 = rank(0.99);
     o.max = rel.back();
     return o;
@@ -32,7 +35,8 @@ double sphere_lens_volume(double a, double b, double d) {
     if (d >= a + b) return 0.0;
     if (d <= std::abs(a - b)) return sphere_volume(std::min(a, b));
     const double h = a + b - d;
-    return std::numbers::pi * h * h * (d * d + 2.0 * d * (a + b) - 3.0 * (a - b) * (a - b)) / (12.0 * d);
+    return std::numbers::pi * h * h * (d * d + 2.0 * d * (a + b) - 3.0 * (a - b) * (a - b)) /
+           (12.0 * d);
 }
 
 double sphere_cap_volume(double r, double overlap) {

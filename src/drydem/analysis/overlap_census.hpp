@@ -22,10 +22,12 @@ struct OverlapStats {
 
 struct OverlapCensus {
     OverlapStats cb_cb, ncm_cb, ncm_ncm, cb_substrate, ncm_substrate;
-    OverlapStats all;           ///< every overlap above, pooled
-    double solid_volume = 0.0;  ///< Σ sphere volumes [m^3]
+    OverlapStats all;          ///< every overlap above, pooled
+    double solid_volume = 0.0; ///< Σ sphere volumes [m^3]
     /// Solid volume lost to overlap lenses, as a fraction of the spheres' volume.
-    [[nodiscard]] double lens_fraction() const { return solid_volume > 0.0 ? all.lens_volume / solid_volume : 0.0; }
+    [[nodiscard]] double lens_fraction() const {
+        return solid_volume > 0.0 ? all.lens_volume / solid_volume : 0.0;
+    }
 };
 
 /// Lens volume of two spheres of radii a and b at centre distance d (0 apart, the smaller sphere's

@@ -49,7 +49,9 @@ void for_each_close_pair(const Structure& s, double gap, Visit&& visit) {
     auto offsets = [](int cells) {
         std::vector<int> o;
         for (int d = -1; d <= 1; ++d)
-            if (std::find_if(o.begin(), o.end(), [&](int e) { return ((e - d) % cells + cells) % cells == 0; }) == o.end())
+            if (std::find_if(o.begin(), o.end(), [&](int e) {
+                    return ((e - d) % cells + cells) % cells == 0;
+                }) == o.end())
                 o.push_back(d);
         return o;
     };
@@ -65,7 +67,8 @@ void for_each_close_pair(const Structure& s, double gap, Visit&& visit) {
                 for (int dx : ox) {
                     const int jx = (ix + dx + nx) % nx, jy = (iy + dy + ny) % ny;
                     const int c = (jz * ny + jy) * nx + jx;
-                    for (std::uint32_t m = start[std::size_t(c)]; m < start[std::size_t(c) + 1]; ++m) {
+                    for (std::uint32_t m = start[std::size_t(c)]; m < start[std::size_t(c) + 1];
+                         ++m) {
                         const std::size_t j = members[m];
                         if (j <= i) continue;
                         const Vec3 d = s.box.minimum_image(a, s.position[j]);

@@ -47,7 +47,8 @@ const std::vector<Offset>& ridge_offsets() {
                     const int n2 = di * di + dj * dj + dk * dk;
                     if (n2 > 0 && n2 <= 6) v.push_back({di, dj, dk, float(std::sqrt(double(n2)))});
                 }
-        std::sort(v.begin(), v.end(), [](const Offset& a, const Offset& b) { return a.length < b.length; });
+        std::sort(v.begin(), v.end(),
+                  [](const Offset& a, const Offset& b) { return a.length < b.length; });
         return v;
     }();
     return o;
@@ -81,7 +82,9 @@ std::vector<std::vector<Center>> ridge(const VoxelGrid& g, const std::vector<std
                 // A small margin keeps float rounding from dropping a centre that is not covered.
                 const float inner = root[v - 1u] + 1e-3f;
                 // B(c) ⊂ B(n) for a neighbour n at distance `length` with value w.
-                auto contains = [&](std::uint16_t w, float length) { return w >= v && root[w] > inner + length; };
+                auto contains = [&](std::uint16_t w, float length) {
+                    return w >= v && root[w] > inner + length;
+                };
                 bool covered = false;
                 if (j_inner && i >= 2 && i + 2 < g.nx) {
                     const std::uint16_t* here = r2.data() + idx;
@@ -147,7 +150,8 @@ std::vector<std::uint16_t> paint_balls(const VoxelGrid& g, const std::vector<std
         const int z0 = s * slab, z1 = std::min(g.nz, z0 + slab);
         for (int kc = std::max(0, z0 - reach); kc < std::min(g.nz, z1 + reach); ++kc) {
             for (const Center& c : centers[std::size_t(kc)]) {
-                const int ci = int(c.in_layer % std::uint32_t(g.nx)), cj = int(c.in_layer / std::uint32_t(g.nx));
+                const int ci = int(c.in_layer % std::uint32_t(g.nx)),
+                          cj = int(c.in_layer / std::uint32_t(g.nx));
                 const int r = isq[c.r2 - 1]; // |dk| ≤ r with dk² < r²
                 const int k_lo = std::max(z0, kc - r), k_hi = std::min(z1 - 1, kc + r);
                 for (int k = k_lo; k <= k_hi; ++k) {
@@ -157,9 +161,12 @@ std::vector<std::uint16_t> paint_balls(const VoxelGrid& g, const std::vector<std
                         const std::uint32_t rem = rem_k - std::uint32_t(dj * dj);
                         const int hi = isq[rem - 1];
                         int jj = cj + dj; // |dj| < ny wraps once; a larger ball needs the modulo
-                        if (hj < g.ny) jj += jj < 0 ? g.ny : (jj >= g.ny ? -g.ny : 0);
-                        else jj = (jj % g.ny + g.ny) % g.ny;
-                        paint_row(out.data() + g.index(0, jj, k), g.nx, ci, hi, std::uint16_t(c.r2));
+                        if (hj < g.ny)
+                            jj += jj < 0 ? g.ny : (jj >= g.ny ? -g.ny : 0);
+                        else
+                            jj = (jj % g.ny + g.ny) % g.ny;
+                        paint_row(out.data() + g.index(0, jj, k), g.nx, ci, hi,
+                                  std::uint16_t(c.r2));
                     }
                 }
             }
@@ -168,15 +175,18 @@ std::vector<std::uint16_t> paint_balls(const VoxelGrid& g, const std::vector<std
     return out;
 }
 
-std::vector<std::uint16_t> local_thickness(const VoxelGrid& g, const std::vector<std::uint16_t>& d2) {
+std::vector<std::uint16_t> local_thickness(const VoxelGrid& g,
+                                           const std::vector<std::uint16_t>& d2) {
     return paint_balls(g, d2);
 }
 
-std::vector<std::uint16_t> invasion_levels(const VoxelGrid& g, const std::vector<std::uint16_t>& d2) {
+std::vector<std::uint16_t> invasion_levels(const VoxelGrid& g,
+                                           const std::vector<std::uint16_t>& d2) {
     if (g.size() >= std::numeric_limits<std::uint32_t>::max())
-        throw InputError(fmt::format("voxel image of {} voxels: intrusion supports fewer than 2^32; "
-                                     "use a coarser voxel size",
-                                     g.size()));
+        throw InputError(
+            fmt::format("voxel image of {} voxels: intrusion supports fewer than 2^32; "
+                        "use a coarser voxel size",
+                        g.size()));
     std::vector<std::uint16_t> level(g.size(), 0);
     // Bucket queue of the widest-path search, highest level first: a voxel's first level is final,
     // because every later pop has a level no higher than the one that reached it.
@@ -206,7 +216,8 @@ std::vector<std::uint16_t> invasion_levels(const VoxelGrid& g, const std::vector
             nb[std::size_t(m++)] = idx - i + (i + 1) % nx;
             nb[std::size_t(m++)] = idx - i + (i + nx - 1) % nx;
             nb[std::size_t(m++)] = idx - j * nx + ((j + 1) % std::size_t(g.ny)) * nx;
-            nb[std::size_t(m++)] = idx - j * nx + ((j + std::size_t(g.ny) - 1) % std::size_t(g.ny)) * nx;
+            nb[std::size_t(m++)] =
+                idx - j * nx + ((j + std::size_t(g.ny) - 1) % std::size_t(g.ny)) * nx;
             if (k + 1 < std::size_t(g.nz)) nb[std::size_t(m++)] = idx + nxy;
             if (k > 0) nb[std::size_t(m++)] = idx - nxy;
             for (int a = 0; a < m; ++a) {
@@ -222,7 +233,8 @@ std::vector<std::uint16_t> invasion_levels(const VoxelGrid& g, const std::vector
     return level;
 }
 
-std::vector<std::uint16_t> intrusion_map(const VoxelGrid& g, const std::vector<std::uint16_t>& levels) {
+std::vector<std::uint16_t> intrusion_map(const VoxelGrid& g,
+                                         const std::vector<std::uint16_t>& levels) {
     return paint_balls(g, levels);
 }
 

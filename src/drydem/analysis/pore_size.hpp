@@ -18,18 +18,22 @@ namespace drydem::analysis {
 
 /// Local thickness as the painted squared radius per voxel (voxel units; 0 = solid). The diameter
 /// of voxel p is 2 sqrt(value) voxels. `d2` = squared_distance_to_solid(g).
-[[nodiscard]] std::vector<std::uint16_t> local_thickness(const VoxelGrid& g, const std::vector<std::uint16_t>& d2);
+[[nodiscard]] std::vector<std::uint16_t> local_thickness(const VoxelGrid& g,
+                                                         const std::vector<std::uint16_t>& d2);
 
 /// Invasion level per voxel for mercury entering through the top layer (0 = solid or never reached):
 /// a sphere of squared radius r² (voxel units) reaches every centre c with level(c) ≥ r².
-[[nodiscard]] std::vector<std::uint16_t> invasion_levels(const VoxelGrid& g, const std::vector<std::uint16_t>& d2);
+[[nodiscard]] std::vector<std::uint16_t> invasion_levels(const VoxelGrid& g,
+                                                         const std::vector<std::uint16_t>& d2);
 
 /// Intrusion map: the squared radius of the largest intruding sphere covering each voxel (0: never
 /// intruded) from the invasion levels.
-[[nodiscard]] std::vector<std::uint16_t> intrusion_map(const VoxelGrid& g, const std::vector<std::uint16_t>& levels);
+[[nodiscard]] std::vector<std::uint16_t> intrusion_map(const VoxelGrid& g,
+                                                       const std::vector<std::uint16_t>& levels);
 
 /// Max-painting of the balls {p : |p - c|² < r²(c)} for all c with r² > 0 (periodic in x, y; cut at
 /// the grid's bottom and top); the generic step behind local thickness and intrusion.
-[[nodiscard]] std::vector<std::uint16_t> paint_balls(const VoxelGrid& g, const std::vector<std::uint16_t>& r2);
+[[nodiscard]] std::vector<std::uint16_t> paint_balls(const VoxelGrid& g,
+                                                     const std::vector<std::uint16_t>& r2);
 
 } // namespace drydem::analysis

@@ -36,7 +36,9 @@ Profiles volume_fraction_profiles(const Structure& s, double dz, double top) {
     const Formulation& f = s.formulation;
     // M-8.4: binder volume per carbon volume when the dissolved PVDF ends up in the agglomerates.
     const double binder_per_carbon =
-        f.cb_mass_fraction > 0.0 ? (f.pvdf_mass_fraction / f.pvdf_density) / (f.cb_mass_fraction / f.cb_density) : 0.0;
+        f.cb_mass_fraction > 0.0
+            ? (f.pvdf_mass_fraction / f.pvdf_density) / (f.cb_mass_fraction / f.cb_density)
+            : 0.0;
     for (std::size_t k = 0; k < n; ++k) {
         const double a = double(k) * dz, b = std::min(top, double(k + 1) * dz);
         const double vol = s.box.area() * (b - a);

@@ -20,7 +20,8 @@ struct SplitMix {
 };
 } // namespace
 
-RandomWalkResult random_walk(const ConductionProblem& p, long walkers, long steps, std::uint64_t seed) {
+RandomWalkResult random_walk(const ConductionProblem& p, long walkers, long steps,
+                             std::uint64_t seed) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::size_t nv = std::size_t(p.nx) * std::size_t(p.ny) * std::size_t(p.nz);
     if (p.sigma.size() != nv || walkers < 1 || steps < 1)
@@ -40,7 +41,8 @@ RandomWalkResult random_walk(const ConductionProblem& p, long walkers, long step
     for (long w = 0; w < walkers; ++w) {
         SplitMix rng{seed * 0x100000001B3ull + std::uint64_t(w)};
         const std::size_t start = pores[rng.next() % pores.size()];
-        int c[3] = {int(start % std::size_t(p.nx)), int((start / std::size_t(p.nx)) % std::size_t(p.ny)),
+        int c[3] = {int(start % std::size_t(p.nx)),
+                    int((start / std::size_t(p.nx)) % std::size_t(p.ny)),
                     int(start / (std::size_t(p.nx) * std::size_t(p.ny)))};
         long disp[3] = {0, 0, 0};
         for (long s = 0; s < steps; ++s) {
@@ -52,8 +54,9 @@ RandomWalkResult random_walk(const ConductionProblem& p, long walkers, long step
                 if (!periodic[std::size_t(d)]) continue; // a wall: stay
                 q[d] = (q[d] + n[d]) % n[d];
             }
-            const std::size_t idx = (std::size_t(q[2]) * std::size_t(p.ny) + std::size_t(q[1])) * std::size_t(p.nx) +
-                                    std::size_t(q[0]);
+            const std::size_t idx =
+                (std::size_t(q[2]) * std::size_t(p.ny) + std::size_t(q[1])) * std::size_t(p.nx) +
+                std::size_t(q[0]);
             if (!(p.sigma[idx] > 0.0f)) continue; // blind ant: the step into the solid is lost
             c[0] = q[0];
             c[1] = q[1];

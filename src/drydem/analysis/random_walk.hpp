@@ -17,7 +17,8 @@
 namespace drydem::analysis {
 
 struct RandomWalkResult {
-    std::array<double, 3> diffusivity{0.0, 0.0, 0.0}; ///< D_w/D₀ per axis (periodic axes only, else 0)
+    std::array<double, 3> diffusivity{0.0, 0.0,
+                                      0.0}; ///< D_w/D₀ per axis (periodic axes only, else 0)
     std::array<double, 3> standard_error{0.0, 0.0, 0.0}; ///< of D_w/D₀ over the walkers
     long walkers = 0, steps = 0;
     double seconds = 0.0;

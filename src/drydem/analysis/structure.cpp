@@ -19,7 +19,8 @@ void Structure::add(const Vec3& x, double r, Phase ph, double rho) {
     density.push_back(rho);
 }
 
-Structure structure_from_file(const ParticleFile& file, const FileDefaults& d, const PhaseRule& rule) {
+Structure structure_from_file(const ParticleFile& file, const FileDefaults& d,
+                              const PhaseRule& rule) {
     Structure s;
     s.formulation = d.formulation;
     s.box.lx = file.lx.value_or(d.box_x);
@@ -28,13 +29,13 @@ Structure structure_from_file(const ParticleFile& file, const FileDefaults& d, c
     const int cb_type = rule.cb_type.value_or(n_ncm + 1);
     for (const ParticleRecord& r : file.particles) {
         if (!rule.cb_type && (r.type < 1 || r.type > n_ncm + 1))
-            throw InputError(fmt::format(
-                "particle {} has type {}; the config defines types 1..{} (NCM classes, then CB = {}); "
-                "name the CB type with --cb-type",
-                r.id, r.type, n_ncm + 1, n_ncm + 1));
+            throw InputError(fmt::format("particle {} has type {}; the config defines types 1..{} "
+                                         "(NCM classes, then CB = {}); "
+                                         "name the CB type with --cb-type",
+                                         r.id, r.type, n_ncm + 1, n_ncm + 1));
         if (!(r.radius > 0.0) || !std::isfinite(r.position.z))
-            throw InputError(fmt::format("particle {}: radius {} m / z {} m is not a valid sphere", r.id,
-                                         r.radius, r.position.z));
+            throw InputError(fmt::format("particle {}: radius {} m / z {} m is not a valid sphere",
+                                         r.id, r.radius, r.position.z));
         Vec3 x = r.position;
         x.x -= file.xlo.value_or(0.0);
         x.y -= file.ylo.value_or(0.0);

@@ -18,19 +18,19 @@ enum class Phase : std::uint8_t { ncm = 1, cb = 2 }; ///< = voxel labels (0 = po
 /// the run configuration's, declared once (io/config_keys.def); drying/analysis_inputs.hpp fills
 /// this from a config, and a structure without it reports no masses (NaN), never invented ones.
 struct Formulation {
-    double ncm_density{};        ///< [kg/m^3], used where the file has no density
-    double cb_density{};         ///< carbon [kg/m^3]
-    double cb_porosity{};        ///< ε_CB: carbon fraction of an agglomerate is 1 - ε_CB
-    double pvdf_density{};       ///< [kg/m^3]
+    double ncm_density{};  ///< [kg/m^3], used where the file has no density
+    double cb_density{};   ///< carbon [kg/m^3]
+    double cb_porosity{};  ///< ε_CB: carbon fraction of an agglomerate is 1 - ε_CB
+    double pvdf_density{}; ///< [kg/m^3]
     double ncm_mass_fraction{}, cb_mass_fraction{}, pvdf_mass_fraction{};
     [[nodiscard]] double solids_density() const; ///< ρ_s, Eq. 4
 };
 
 struct Structure {
-    Box box;                          ///< periodic x-y lengths
-    std::vector<Vec3> position;       ///< [m], x and y wrapped into [0, l)
-    std::vector<double> radius;       ///< [m]
-    std::vector<double> density;      ///< [kg/m^3] of NCM spheres (file or formulation); unused for CB
+    Box box;                     ///< periodic x-y lengths
+    std::vector<Vec3> position;  ///< [m], x and y wrapped into [0, l)
+    std::vector<double> radius;  ///< [m]
+    std::vector<double> density; ///< [kg/m^3] of NCM spheres (file or formulation); unused for CB
     std::vector<Phase> phase;
     Formulation formulation;
 

@@ -13,21 +13,25 @@
 namespace drydem::analysis {
 
 struct SurfaceOptions {
-    int points = 400;        ///< lattice points per NCM sphere; 0 = no surface analysis
-    double cb_gap = 0.1e-6;  ///< a point within this distance of a CB surface counts as covered [m]
+    int points = 400;       ///< lattice points per NCM sphere; 0 = no surface analysis
+    double cb_gap = 0.1e-6; ///< a point within this distance of a CB surface counts as covered [m]
 };
 
 struct Surfaces {
     bool computed = false;
-    double gap = 0.0;                ///< the cb_gap used [m]
-    double total = 0.0;              ///< Σ 4π r² of the NCM spheres [m²]
-    double ncm_contact = 0.0;        ///< inside another NCM sphere [m²]
-    double substrate = 0.0;          ///< below z = 0 [m²]
-    double cb_overlap = 0.0;         ///< inside a CB sphere (no gap) and not in the two above [m²]
-    double cb_covered = 0.0;         ///< within cb_gap of a CB sphere (includes cb_overlap) [m²]
-    double electrolyte = 0.0;        ///< the rest: in contact with the free electrolyte [m²]
-    [[nodiscard]] double cb_covered_fraction() const { return total > 0 ? cb_covered / total : 0.0; }
-    [[nodiscard]] double electrolyte_fraction() const { return total > 0 ? electrolyte / total : 0.0; }
+    double gap = 0.0;         ///< the cb_gap used [m]
+    double total = 0.0;       ///< Σ 4π r² of the NCM spheres [m²]
+    double ncm_contact = 0.0; ///< inside another NCM sphere [m²]
+    double substrate = 0.0;   ///< below z = 0 [m²]
+    double cb_overlap = 0.0;  ///< inside a CB sphere (no gap) and not in the two above [m²]
+    double cb_covered = 0.0;  ///< within cb_gap of a CB sphere (includes cb_overlap) [m²]
+    double electrolyte = 0.0; ///< the rest: in contact with the free electrolyte [m²]
+    [[nodiscard]] double cb_covered_fraction() const {
+        return total > 0 ? cb_covered / total : 0.0;
+    }
+    [[nodiscard]] double electrolyte_fraction() const {
+        return total > 0 ? electrolyte / total : 0.0;
+    }
 };
 
 [[nodiscard]] Surfaces ncm_surfaces(const Structure& s, const SurfaceOptions& o);

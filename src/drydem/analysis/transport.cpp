@@ -15,21 +15,25 @@ double tortuosity_factor(double porosity, double sigma_eff) {
 }
 
 double bruggeman_exponent(double porosity, double tau) {
-    if (!(porosity > 0.0 && porosity < 1.0 && tau > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    if (!(porosity > 0.0 && porosity < 1.0 && tau > 0.0))
+        return std::numeric_limits<double>::quiet_NaN();
     return 1.0 - std::log(tau) / std::log(porosity);
 }
 
-Extrapolation extrapolate_to_zero_voxel(const std::vector<double>& h, const std::vector<double>& v) {
+Extrapolation extrapolate_to_zero_voxel(const std::vector<double>& h,
+                                        const std::vector<double>& v) {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     const std::size_t n = std::min(h.size(), v.size());
     if (n < 2) return {nan, 0.0, false};
     const double h1 = h[n - 2], h2 = h[n - 1], v1 = v[n - 2], v2 = v[n - 1];
-    if (!(h1 > h2 && h2 > 0.0) || !std::isfinite(v1) || !std::isfinite(v2)) return {nan, 0.0, false};
+    if (!(h1 > h2 && h2 > 0.0) || !std::isfinite(v1) || !std::isfinite(v2))
+        return {nan, 0.0, false};
     const double r = h1 / h2;
     if (n == 2) return {nan, 0.0, false};
     const double h0 = h[n - 3], v0 = v[n - 3];
     const double d1 = v1 - v0, d2 = v2 - v1;
-    if (!(h0 > h1) || std::abs(h0 / h1 - r) > 0.01 * r || d1 == 0.0 || d2 == 0.0 || (d1 > 0) != (d2 > 0))
+    if (!(h0 > h1) || std::abs(h0 / h1 - r) > 0.01 * r || d1 == 0.0 || d2 == 0.0 ||
+        (d1 > 0) != (d2 > 0))
         return {nan, 0.0, false};
     const double p = std::log(d1 / d2) / std::log(r);
     if (!(p >= 0.5 && p <= 3.0)) return {nan, p, true};
@@ -79,17 +83,20 @@ double finest_solvable(const Structure& s, double top, const TransportOptions& o
 /// A window must lie inside the box and span a few voxels at every solved size.
 void check_window(const Structure& s, const TransportOptions& o) {
     if (!(o.window >= 0.0))
-        throw InputError(fmt::format("analysis.transport_window = {} um: must be >= 0 (0 = the whole box)", o.window * 1e6));
+        throw InputError(fmt::format(
+            "analysis.transport_window = {} um: must be >= 0 (0 = the whole box)", o.window * 1e6));
     const double side = std::min(s.box.lx, s.box.ly);
     if (o.window > side * (1.0 + 1e-9))
-        throw InputError(fmt::format("analysis.transport_window = {:.4g} um is wider than the box ({:.4g} x {:.4g} um); "
-                                     "allowed: 0 (the whole box) up to {:.4g} um",
-                                     o.window * 1e6, s.box.lx * 1e6, s.box.ly * 1e6, side * 1e6));
+        throw InputError(fmt::format(
+            "analysis.transport_window = {:.4g} um is wider than the box ({:.4g} x {:.4g} um); "
+            "allowed: 0 (the whole box) up to {:.4g} um",
+            o.window * 1e6, s.box.lx * 1e6, s.box.ly * 1e6, side * 1e6));
     for (double a : o.voxels)
         if (o.window > 0.0 && o.window < 8.0 * a)
-            throw InputError(fmt::format("analysis.transport_window = {:.4g} um spans fewer than 8 voxels of {:.3g} um; "
-                                         "allowed: 0 or at least 8 voxels of the coarsest transport voxel size",
-                                         o.window * 1e6, a * 1e6));
+            throw InputError(fmt::format(
+                "analysis.transport_window = {:.4g} um spans fewer than 8 voxels of {:.3g} um; "
+                "allowed: 0 or at least 8 voxels of the coarsest transport voxel size",
+                o.window * 1e6, a * 1e6));
 }
 
 } // namespace
@@ -108,7 +115,8 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
     t.top = top;
     t.sigma_ncm = o.sigma_ncm;
     t.sigma_cb = o.sigma_cb;
-    if (!(top > 0.0)) throw InputError(fmt::format("transport: coating top {} m must be positive", top));
+    if (!(top > 0.0))
+        throw InputError(fmt::format("transport: coating top {} m must be positive", top));
     if (!(o.sigma_ncm >= 0.0) || !(o.sigma_cb >= 0.0))
         throw InputError("transport: the NCM and CB conductivities must be >= 0");
     auto say = [&](const std::string& m) {
@@ -122,13 +130,15 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
         const std::size_t count = solved_count(s, a, top, o);
         if (count > o.max_voxels) {
             t.skipped.push_back({a, count});
-            say(fmt::format("transport {:.3g} um: skipped, {} voxels > analysis.transport_max_voxels = {}", a * 1e6,
-                            count, o.max_voxels));
+            say(fmt::format(
+                "transport {:.3g} um: skipped, {} voxels > analysis.transport_max_voxels = {}",
+                a * 1e6, count, o.max_voxels));
             continue;
         }
         TransportLevel L;
         const VoxelDims w = solved_dims(s, a, top, o);
-        const VoxelGrid g = windowed ? crop_xy(voxelize(s, a, top), w.nx, w.ny) : voxelize(s, a, top);
+        const VoxelGrid g =
+            windowed ? crop_xy(voxelize(s, a, top), w.nx, w.ny) : voxelize(s, a, top);
         L.voxel = g.az;
         L.nx = g.nx;
         L.ny = g.ny;
@@ -152,9 +162,10 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
             p.axis = axis;
             ConductionResult r = solve_conduction(p);
             peak = std::max(peak, r.memory_bytes);
-            say(fmt::format("transport {:.3g} um, {}: sigma_eff {:.5g}, {} unknowns, {} CG iterations{}, {:.1f} s",
-                            a * 1e6, what, r.sigma_eff, r.unknowns, r.iterations, r.converged ? "" : " (NOT converged)",
-                            r.seconds));
+            say(fmt::format("transport {:.3g} um, {}: sigma_eff {:.5g}, {} unknowns, {} CG "
+                            "iterations{}, {:.1f} s",
+                            a * 1e6, what, r.sigma_eff, r.unknowns, r.iterations,
+                            r.converged ? "" : " (NOT converged)", r.seconds));
             return r;
         };
         L.pore_z = solve(2, "pores through-plane");
@@ -168,18 +179,23 @@ Transport film_transport(const Structure& s, double top, const TransportOptions&
         if (o.walkers > 0 && o.walk_steps > 0 && !windowed && a == finest_solvable(s, top, o)) {
             p.periodic = {true, true, false};
             L.walk = random_walk(p, o.walkers, o.walk_steps);
-            say(fmt::format("transport {:.3g} um, random walks in the pores: tau x {:.4g} +- {:.2g}, y {:.4g} +- {:.2g} "
-                            "({} walkers x {} steps, {:.1f} s)",
-                            a * 1e6, 1.0 / L.walk.diffusivity[0],
-                            L.walk.standard_error[0] / (L.walk.diffusivity[0] * L.walk.diffusivity[0]),
-                            1.0 / L.walk.diffusivity[1],
-                            L.walk.standard_error[1] / (L.walk.diffusivity[1] * L.walk.diffusivity[1]), o.walkers,
-                            o.walk_steps, L.walk.seconds));
+            say(fmt::format(
+                "transport {:.3g} um, random walks in the pores: tau x {:.4g} +- {:.2g}, y {:.4g} "
+                "+- {:.2g} "
+                "({} walkers x {} steps, {:.1f} s)",
+                a * 1e6, 1.0 / L.walk.diffusivity[0],
+                L.walk.standard_error[0] / (L.walk.diffusivity[0] * L.walk.diffusivity[0]),
+                1.0 / L.walk.diffusivity[1],
+                L.walk.standard_error[1] / (L.walk.diffusivity[1] * L.walk.diffusivity[1]),
+                o.walkers, o.walk_steps, L.walk.seconds));
         }
         for (std::size_t i = 0; i < nv; ++i)
-            p.sigma[i] = g.label[i] == label_ncm ? float(o.sigma_ncm) : g.label[i] == label_cb ? float(o.sigma_cb) : 0.0f;
+            p.sigma[i] = g.label[i] == label_ncm  ? float(o.sigma_ncm)
+                         : g.label[i] == label_cb ? float(o.sigma_cb)
+                                                  : 0.0f;
         L.electronic_z = solve(2, "solid (NCM + CB) through-plane");
-        for (std::size_t i = 0; i < nv; ++i) p.sigma[i] = g.label[i] == label_cb ? float(o.sigma_cb) : 0.0f;
+        for (std::size_t i = 0; i < nv; ++i)
+            p.sigma[i] = g.label[i] == label_cb ? float(o.sigma_cb) : 0.0f;
         L.cb_z = solve(2, "CB network through-plane");
         L.memory_bytes = peak + nv; // + the labels
         L.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -17,7 +17,8 @@ VoxelDims voxel_dims(const Structure& s, double voxel, double top) {
 
 VoxelGrid crop_xy(const VoxelGrid& g, int nx, int ny) {
     if (nx < 1 || ny < 1 || nx > g.nx || ny > g.ny)
-        throw InputError(fmt::format("window of {} x {} voxels outside the image of {} x {}", nx, ny, g.nx, g.ny));
+        throw InputError(fmt::format("window of {} x {} voxels outside the image of {} x {}", nx,
+                                     ny, g.nx, g.ny));
     VoxelGrid w;
     w.nx = nx;
     w.ny = ny;
@@ -70,13 +71,15 @@ VoxelGrid voxelize(const Structure& s, double voxel, double top) {
             if (r2 < 0.0) continue;
             const double rd = std::sqrt(r2); // disk radius in this layer
             const std::uint8_t lab = s.phase[i] == Phase::ncm ? label_ncm : label_cb;
-            const int j0 = int(std::ceil((c.y - rd) / g.ay - 0.5)), j1 = int(std::floor((c.y + rd) / g.ay - 0.5));
+            const int j0 = int(std::ceil((c.y - rd) / g.ay - 0.5)),
+                      j1 = int(std::floor((c.y + rd) / g.ay - 0.5));
             for (int j = j0; j <= j1; ++j) {
                 const double dy = (j + 0.5) * g.ay - c.y;
                 const double w2 = r2 - dy * dy;
                 if (w2 < 0.0) continue;
                 const double w = std::sqrt(w2);
-                const int i0 = int(std::ceil((c.x - w) / g.ax - 0.5)), i1 = int(std::floor((c.x + w) / g.ax - 0.5));
+                const int i0 = int(std::ceil((c.x - w) / g.ax - 0.5)),
+                          i1 = int(std::floor((c.x + w) / g.ax - 0.5));
                 const int jj = ((j % g.ny) + g.ny) % g.ny;
                 std::uint8_t* row = layer + std::size_t(jj) * std::size_t(g.nx);
                 if (i1 - i0 + 1 >= g.nx) {

@@ -19,7 +19,8 @@ struct VoxelGrid {
     std::vector<std::uint8_t> label;
 
     [[nodiscard]] std::size_t index(int i, int j, int k) const {
-        return (std::size_t(k) * std::size_t(ny) + std::size_t(j)) * std::size_t(nx) + std::size_t(i);
+        return (std::size_t(k) * std::size_t(ny) + std::size_t(j)) * std::size_t(nx) +
+               std::size_t(i);
     }
     [[nodiscard]] std::size_t size() const { return label.size(); }
 };

@@ -16,7 +16,8 @@ namespace drydem::app {
 
 int run_bench(const BenchOptions& o) {
     const ParticleFile in = read_particles(o.data);
-    if (!in.lx || !in.ly) throw InputError(fmt::format("bench: {} has no box (need a LAMMPS data file)", o.data));
+    if (!in.lx || !in.ly)
+        throw InputError(fmt::format("bench: {} has no box (need a LAMMPS data file)", o.data));
     const Box box{*in.lx, *in.ly};
     ParticleStore p;
     int types = 0;
@@ -27,7 +28,8 @@ int run_bench(const BenchOptions& o) {
         p.add(r.id, std::uint8_t(r.type - 1), r.radius, r.density, x);
         types = std::max(types, r.type);
     }
-    ForceField ff = uniform_contact_force_field(types, o.youngs_modulus, o.poisson_ratio, o.restitution, o.friction);
+    ForceField ff = uniform_contact_force_field(types, o.youngs_modulus, o.poisson_ratio,
+                                                o.restitution, o.friction);
     ff.gravity.gravity = o.gravity;
     ff.drag.viscosity = o.viscosity;
     ff.drag.rotational = false;
@@ -43,18 +45,20 @@ int run_bench(const BenchOptions& o) {
     const PhaseTimes before = sim.phase_times();
     const auto t0 = std::chrono::steady_clock::now();
     sim.run(o.steps);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double rate = double(n) * double(o.steps) / wall;
     const PhaseTimes& after = sim.phase_times();
     // Contacts per particle as the peers count them: each contact at both particles, no wall.
-    fmt::print("{{\"code\": \"drydem\", \"threads\": {}, \"particles\": {}, \"steps\": {}, "
-               "\"seconds\": {:.4f}, \"ms_per_step\": {:.4f}, \"particle_steps_per_s\": {:.5g}, "
-               "\"contacts_per_particle\": {:.4f}, \"neighbor_builds\": {}, \"pairs_in_list\": {}, "
-               "\"seconds_pair\": {:.4f}, \"seconds_neighbor\": {:.4f}, \"seconds_integrate\": {:.4f}}}\n",
-               sim.threads(), n, o.steps, wall, 1e3 * wall / double(o.steps), rate,
-               2.0 * double(sim.stats().contacts) / double(n), sim.neighbors().builds() - builds0,
-               sim.neighbors().pairs(), after.pair - before.pair, after.neighbor - before.neighbor,
-               after.integrate - before.integrate);
+    fmt::print(
+        "{{\"code\": \"drydem\", \"threads\": {}, \"particles\": {}, \"steps\": {}, "
+        "\"seconds\": {:.4f}, \"ms_per_step\": {:.4f}, \"particle_steps_per_s\": {:.5g}, "
+        "\"contacts_per_particle\": {:.4f}, \"neighbor_builds\": {}, \"pairs_in_list\": {}, "
+        "\"seconds_pair\": {:.4f}, \"seconds_neighbor\": {:.4f}, \"seconds_integrate\": {:.4f}}}\n",
+        sim.threads(), n, o.steps, wall, 1e3 * wall / double(o.steps), rate,
+        2.0 * double(sim.stats().contacts) / double(n), sim.neighbors().builds() - builds0,
+        sim.neighbors().pairs(), after.pair - before.pair, after.neighbor - before.neighbor,
+        after.integrate - before.integrate);
     return 0;
 }
 

@@ -41,7 +41,8 @@ void print_guard_clusters(const Config& c, const FilmRecipe& r) {
 /// scheme distorts (docs/model.md "Dimensionless groups").
 void print_groups(const DimensionlessGroups& d) {
     fmt::print("Dimensionless groups (docs/model.md \"Dimensionless groups\"; film H = {:.4g} um, "
-               "push length l* = {:.4g} um)\n", d.film_thickness * 1e6, d.push_length * 1e6);
+               "push length l* = {:.4g} um)\n",
+               d.film_thickness * 1e6, d.push_length * 1e6);
     using G = double Groups::*;
     const std::pair<const char*, G> rows[] = {
         {"capillary number, drag", &Groups::capillary_drag},
@@ -62,14 +63,16 @@ void print_groups(const DimensionlessGroups& d) {
                    d.level_speeds_physical[z] * 1e6, "physical", "simulated", "ratio");
         for (const auto& [name, member] : rows) {
             const double p = d.physical[z].*member, q = d.simulated[z].*member;
-            fmt::print("    {:<37} {:>11.3g} {:>11.3g} {:>10.3g}\n", name, p, q, p > 0.0 ? q / p : 0.0);
+            fmt::print("    {:<37} {:>11.3g} {:>11.3g} {:>10.3g}\n", name, p, q,
+                       p > 0.0 ? q / p : 0.0);
         }
     }
     const Groups& worst = d.simulated.back();
     if (worst.push > push_number_warning)
-        fmt::print("  warning: the simulated push number {:.3g} passes {:g}: the level cannot carry the film, "
-                   "which jams at a point set by the time scaling (docs/validation.md)\n", worst.push,
-                   push_number_warning);
+        fmt::print("  warning: the simulated push number {:.3g} passes {:g}: the level cannot "
+                   "carry the film, "
+                   "which jams at a point set by the time scaling (docs/validation.md)\n",
+                   worst.push, push_number_warning);
     fmt::print("\n");
 }
 
@@ -79,17 +82,19 @@ void print_check(const Config& c) {
     const FilmRecipe r = make_recipe(c);
     const ScaledParameters s = scale_parameters(c);
     const ForceField ff = make_drying_force_field(c, r, s);
-    constexpr double pi = std::numbers::pi;
     fmt::print("configuration '{}' is valid\n\n", c.name);
     fmt::print("Film (model.md M-1)\n");
-    fmt::print("  box                       {:.4g} x {:.4g} um (periodic x, y)\n", c.box_x * 1e6, c.box_y * 1e6);
+    fmt::print("  box                       {:.4g} x {:.4g} um (periodic x, y)\n", c.box_x * 1e6,
+               c.box_y * 1e6);
     fmt::print("  areal loading             {:.4g} mg/cm2 nominal, {:.4g} mg/cm2 realised (C-3)\n",
                c.areal_loading * 100, r.realised_dry_mass() / r.base_area * 100);
     fmt::print("  solids density (Eq. 4)    {:.5g} g/cm3\n", r.solids_density * 1e-3);
     fmt::print("  wet film height (Eq. 3)   {:.5g} um\n", r.wet_film_height * 1e6);
-    fmt::print("  CB particle density       {:.5g} g/cm3 (porosity {:.3g}, pores filled with solvent)\n",
-               r.cb_effective_density * 1e-3, c.cb_porosity);
-    fmt::print("  species                   type  diameter_um  count  (unrounded)  density_g_cm3\n");
+    fmt::print(
+        "  CB particle density       {:.5g} g/cm3 (porosity {:.3g}, pores filled with solvent)\n",
+        r.cb_effective_density * 1e-3, c.cb_porosity);
+    fmt::print(
+        "  species                   type  diameter_um  count  (unrounded)  density_g_cm3\n");
     int type = 1;
     for (const SizeClass& sc : r.species)
         fmt::print("    {:<22}  {:>4}  {:>11.4g}  {:>5}  ({:>9.2f})  {:>13.5g}\n",
@@ -97,18 +102,24 @@ void print_check(const Config& c) {
                    sc.count_exact, sc.density * 1e-3);
     fmt::print("  particles                 {}\n\n", r.particle_count());
 
-    fmt::print("Scaling (M-7): scheme \"{}\", k = {:g}, b = {:g}, capillary x {:g}, Hamaker x {:g}, "
-               "Young's moduli x {:g}\n", s.scheme, s.time_factor, s.viscosity_reduction, s.capillary_factor,
-               s.hamaker_factor, s.stiffness_factor);
-    fmt::print("  gravity                   {:g} -> {:g} m/s2\n", s.gravity_physical, s.gravity_scaled);
-    fmt::print("  Stokes viscosity          {:g} -> {:g} Pa s\n", s.drag_viscosity_physical, s.drag_viscosity_scaled);
+    fmt::print(
+        "Scaling (M-7): scheme \"{}\", k = {:g}, b = {:g}, capillary x {:g}, Hamaker x {:g}, "
+        "Young's moduli x {:g}\n",
+        s.scheme, s.time_factor, s.viscosity_reduction, s.capillary_factor, s.hamaker_factor,
+        s.stiffness_factor);
+    fmt::print("  gravity                   {:g} -> {:g} m/s2\n", s.gravity_physical,
+               s.gravity_scaled);
+    fmt::print("  Stokes viscosity          {:g} -> {:g} Pa s\n", s.drag_viscosity_physical,
+               s.drag_viscosity_scaled);
     fmt::print("  lubrication viscosity     {:g} Pa s\n", s.lubrication_viscosity);
     fmt::print("  Hamaker CB-CB/NCM-CB/NCM-NCM  {:g} / {:g} / {:g} -> {:g} / {:g} / {:g} J\n",
                s.hamaker_cb_cb[0], s.hamaker_ncm_cb[0], s.hamaker_ncm_ncm[0], s.hamaker_cb_cb[1],
                s.hamaker_ncm_cb[1], s.hamaker_ncm_ncm[1]);
     fmt::print("  surface tension x factor  {:g} -> {:g} N/m (capillary stiffness {:.4g} N/m)\n",
-               s.surface_tension_physical, s.surface_tension_scaled, capillary_stiffness(ff.capillary));
-    fmt::print("  dryer zone duration       {:g} s -> {:g} s\n", s.zone_duration_physical, s.zone_duration_scaled);
+               s.surface_tension_physical, s.surface_tension_scaled,
+               capillary_stiffness(ff.capillary));
+    fmt::print("  dryer zone duration       {:g} s -> {:g} s\n", s.zone_duration_physical,
+               s.zone_duration_scaled);
     for (std::size_t z = 0; z < s.level_speeds_scaled.size(); ++z)
         fmt::print("  zone {} shrinkage rate     {:g} um/s -> level speed {:g} m/s\n", z + 1,
                    s.shrinkage_rates_physical[z] * 1e6, s.level_speeds_scaled[z]);
@@ -116,12 +127,15 @@ void print_check(const Config& c) {
     // Time-step limits for the smallest particle (M-9.2).
     const TimeScales ts = time_scales(c, r, s, ff);
     const double cap = c.time_step_cap();
-    fmt::print("\nTime step, smallest particle d = {:.3g} um, m = {:.4g} kg\n", ts.diameter * 1e6, ts.mass);
-    fmt::print("  integrator                {} (numerics.integrator), largest step {:.3g} s (scaled)\n",
-               c.integrator, cap);
-    fmt::print("  Rayleigh time             {:.3g} s (0.2 T_R = {:.3g} s)\n", ts.rayleigh, 0.2 * ts.rayleigh);
-    fmt::print("  Hertz contact time        {:.3g} s at 1 m/s, {:.3g} s at the level speed\n", ts.contact_at_1m_s,
-               ts.contact_at_level_speed);
+    fmt::print("\nTime step, smallest particle d = {:.3g} um, m = {:.4g} kg\n", ts.diameter * 1e6,
+               ts.mass);
+    fmt::print(
+        "  integrator                {} (numerics.integrator), largest step {:.3g} s (scaled)\n",
+        c.integrator, cap);
+    fmt::print("  Rayleigh time             {:.3g} s (0.2 T_R = {:.3g} s)\n", ts.rayleigh,
+               0.2 * ts.rayleigh);
+    fmt::print("  Hertz contact time        {:.3g} s at 1 m/s, {:.3g} s at the level speed\n",
+               ts.contact_at_1m_s, ts.contact_at_level_speed);
     fmt::print("  Stokes drag (scaled)      2 m/(6 pi eta r) = {:.3g} s\n", ts.drag_relaxation);
     fmt::print("  capillary spring period   {:.3g} s\n", ts.capillary_period);
     print_guard_clusters(c, r);
@@ -133,27 +147,33 @@ void print_check(const Config& c) {
     const double h_final = d.final_thickness, travel = d.level_travel, t_sim = d.sim_time;
     const double steps = d.steps;
     fmt::print("\nCost estimate (M-8.3)\n");
-    fmt::print("  final thickness (~2.4 g/cm3) {:.4g} um, level travel {:.4g} um\n", h_final * 1e6, travel * 1e6);
+    fmt::print("  final thickness (~2.4 g/cm3) {:.4g} um, level travel {:.4g} um\n", h_final * 1e6,
+               travel * 1e6);
     fmt::print("  simulated time            {:.3g} s ({:.3g} s process, incl. {:g} s relaxation)\n",
                t_sim, s.process_time(t_sim), c.relaxation);
-    fmt::print("  steps                     {:.3g} at the largest step (the guard may lower it)\n", steps);
+    fmt::print("  steps                     {:.3g} at the largest step (the guard may lower it)\n",
+               steps);
     fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
     const int cores = c.threads > 0 ? c.threads : std::max(1, omp_get_num_procs());
     const double wall = estimated_wall_time(d, cores);
-    fmt::print("  wall time                 ~{:.3g} h on {} cores at {:.3g} particle-steps/s per core{}\n", wall / 3600,
-               cores, reference_particle_steps_per_core,
-               wall > wall_time_warning ? "; warning: more than a day (`drydem run` warns too)" : "");
+    fmt::print(
+        "  wall time                 ~{:.3g} h on {} cores at {:.3g} particle-steps/s per core{}\n",
+        wall / 3600, cores, reference_particle_steps_per_core,
+        wall > wall_time_warning ? "; warning: more than a day (`drydem run` warns too)" : "");
     const double memory = double(r.particle_count()) * bytes_per_particle + 5e6;
-    fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers){}\n", memory / 1e6,
-               memory > 0.8 * physical_memory_bytes() ? fmt::format("; more than 80 % of this machine's {:.3g} GB: "
-                                                                   "`drydem run` refuses it here",
-                                                                   physical_memory_bytes() / 1e9)
-                                                      : "");
+    fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers){}\n",
+               memory / 1e6,
+               memory > 0.8 * physical_memory_bytes()
+                   ? fmt::format("; more than 80 % of this machine's {:.3g} GB: "
+                                 "`drydem run` refuses it here",
+                                 physical_memory_bytes() / 1e9)
+                   : "");
     if (c.analysis_at_end && c.analysis_voxel_size > 0.0) {
         const double voxels = voxel_image_voxels(c, r, h_final);
-        fmt::print("  analysis at the end       voxel image ~{:.2g} voxels at {:.3g} um, ~{:.1f} GB "
-                   "(analysis.voxel_size; 0 = none)\n",
-                   voxels, c.analysis_voxel_size * 1e6, analysis::voxel_analysis_bytes * voxels / 1e9);
+        fmt::print(
+            "  analysis at the end       voxel image ~{:.2g} voxels at {:.3g} um, ~{:.1f} GB "
+            "(analysis.voxel_size; 0 = none)\n",
+            voxels, c.analysis_voxel_size * 1e6, analysis::voxel_analysis_bytes * voxels / 1e9);
     }
 }
 

@@ -32,7 +32,7 @@ struct StudyOptions {
     int threads = 0;              ///< per run; 0: cores / runs, at least 1
     int jobs = 0;                 ///< runs at a time; 0: cores / threads
     bool quiet = false, plots = true;
-    bool resume = false;          ///< continue a stopped study in output_dir (its finished runs kept)
+    bool resume = false; ///< continue a stopped study in output_dir (its finished runs kept)
 };
 int run_study(const Config& base, const StudyOptions& o);
 
@@ -40,8 +40,8 @@ int run_study(const Config& base, const StudyOptions& o);
 /// replaces itself with the search driver scripts/calibrate.py (docs/calibration.md).
 struct CalibrateOptions {
     std::filesystem::path output_dir;
-    int jobs = 1;     ///< local: runs at a time; slurm: evaluations per job array
-    int threads = 0;  ///< per local run; 0: cores / jobs, at least 1
+    int jobs = 1;    ///< local: runs at a time; slurm: evaluations per job array
+    int threads = 0; ///< per local run; 0: cores / jobs, at least 1
     bool resume = false, quiet = false, plots = true;
 };
 int run_calibrate(const Config& c, const CalibrateOptions& o);
@@ -68,7 +68,7 @@ int run_coupled(const Config& c, const RunOptions& o);
 struct AnalyzeOptions {
     std::filesystem::path snapshot, output_dir;
     analysis::AnalysisOptions analysis;
-    int cb_type = 0;             ///< 0: the config's convention (types 1..n NCM, n + 1 CB)
+    int cb_type = 0; ///< 0: the config's convention (types 1..n NCM, n + 1 CB)
     bool export_voxels = false, tiff = false, plots = true, quiet = false;
     int threads = 0;
 };

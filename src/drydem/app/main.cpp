@@ -54,8 +54,9 @@ std::uint64_t cli_integer(const std::string& option, const std::string& text, st
 void check_threads(const std::string& what, long threads) {
     const int cores = omp_get_num_procs();
     if (threads > cores)
-        throw InputError(fmt::format("{} = {}: this machine has {} cores; allowed 1..{} (0 = all cores)",
-                                     what, threads, cores, cores));
+        throw InputError(
+            fmt::format("{} = {}: this machine has {} cores; allowed 1..{} (0 = all cores)", what,
+                        threads, cores, cores));
 }
 
 /// Every option of every command, filled by CLI11; one command is parsed per call.
@@ -72,73 +73,91 @@ struct CommandLine {
     std::string an_voxel, an_dz, an_gap, an_config, an_pore_top;
     bool an_no_voxels = false;
     app::BenchOptions bench_opt;
-    CLI::App *run = nullptr, *dryer = nullptr, *check = nullptr, *config = nullptr, *study = nullptr,
-             *calibrate = nullptr, *analyze = nullptr, *bench = nullptr;
+    CLI::App *run = nullptr, *dryer = nullptr, *check = nullptr, *config = nullptr,
+             *study = nullptr, *calibrate = nullptr, *analyze = nullptr, *bench = nullptr;
     CLI::Option *seed_opt = nullptr, *threads_opt = nullptr, *stop_after_opt = nullptr;
     std::optional<std::uint64_t> seed, threads;
     std::optional<std::int64_t> stop_after;
 };
 
 void declare_run(CommandLine& a) {
-    a.run = a.cli.add_subcommand("run", "run the drying simulation (no CONFIG: the paper's 20.1 mg/cm2 case)");
+    a.run = a.cli.add_subcommand(
+        "run", "run the drying simulation (no CONFIG: the paper's 20.1 mg/cm2 case)");
     a.run->add_option("config", a.config_file, "TOML configuration")->check(CLI::ExistingFile);
     a.run->add_option("-o,--output", a.out_dir, "output folder (default out/<name>-<timestamp>)");
     a.run->add_option("--set", a.sets, "override a key, e.g. --set run.seed=7")->take_all();
-    a.seed_opt = a.run->add_option("--seed", a.seed_text, "random seed 0..2^63-1 (= --set run.seed=N)");
-    a.threads_opt = a.run->add_option("--threads", a.threads_text, "OpenMP threads, 0 = all cores (= --set run.threads=N)");
-    a.run->add_flag("--overwrite", a.overwrite,
-                  "replace the outputs of a previous run in the -o folder (default: refuse a folder "
-                  "that holds a run)");
-    a.run->add_option("--particles", a.particles, "start from these particles (CSV, LAMMPS data or dump)")
+    a.seed_opt =
+        a.run->add_option("--seed", a.seed_text, "random seed 0..2^63-1 (= --set run.seed=N)");
+    a.threads_opt = a.run->add_option("--threads", a.threads_text,
+                                      "OpenMP threads, 0 = all cores (= --set run.threads=N)");
+    a.run->add_flag(
+        "--overwrite", a.overwrite,
+        "replace the outputs of a previous run in the -o folder (default: refuse a folder "
+        "that holds a run)");
+    a.run
+        ->add_option("--particles", a.particles,
+                     "start from these particles (CSV, LAMMPS data or dump)")
         ->check(CLI::ExistingFile);
-    a.run->add_option("--resume", a.resume_dir,
-                    "continue the run in this output folder from its checkpoint (same config, "
-                    "same threads: bit-identical to an uninterrupted run)")
+    a.run
+        ->add_option("--resume", a.resume_dir,
+                     "continue the run in this output folder from its checkpoint (same config, "
+                     "same threads: bit-identical to an uninterrupted run)")
         ->check(CLI::ExistingDirectory);
     a.run->add_flag("--quiet", a.quiet, "only warnings and errors on the console");
     a.run->add_flag("--no-plots", a.no_plots, "skip the matplotlib plots");
     // For tests only: a deterministic stand-in for a signal or a kill at a given step.
     a.stop_after_opt =
-        a.run->add_option("--stop-after-steps", a.stop_after_text,
-                        "for testing: stop after step N as SIGTERM would (checkpoint, results so "
-                        "far, exit 1); also with --resume")
+        a.run
+            ->add_option("--stop-after-steps", a.stop_after_text,
+                         "for testing: stop after step N as SIGTERM would (checkpoint, results so "
+                         "far, exit 1); also with --resume")
             ->group("Testing");
     a.run->add_flag("--couple-dryer", a.couple_dryer,
-                  "iterate dryer model <-> DEM until the final thickness settles (paper Sec. 8; "
-                  "each DEM run in DIR/iter_N, summary in DIR/coupling.json)");
-
+                    "iterate dryer model <-> DEM until the final thickness settles (paper Sec. 8; "
+                    "each DEM run in DIR/iter_N, summary in DIR/coupling.json)");
 }
 
 void declare_dryer_check_config(CommandLine& a) {
     a.dryer = a.cli.add_subcommand("dryer", "the dryer model alone: film temperature, solvent "
-                                              "content, shrinkage rate per zone (docs/dryer.md)");
+                                            "content, shrinkage rate per zone (docs/dryer.md)");
     a.dryer->add_option("config", a.config_file, "TOML configuration")->check(CLI::ExistingFile);
-    a.dryer->add_option("-o,--output", a.out_dir, "output folder (default out/<name>-dryer-<timestamp>)");
-    a.dryer->add_option("--set", a.sets, "override a key, e.g. --set dryer.preset=physical")->take_all();
+    a.dryer->add_option("-o,--output", a.out_dir,
+                        "output folder (default out/<name>-dryer-<timestamp>)");
+    a.dryer->add_option("--set", a.sets, "override a key, e.g. --set dryer.preset=physical")
+        ->take_all();
     a.dryer->add_flag("--no-plots", a.no_plots, "skip the matplotlib plot");
-    a.dryer->add_flag("--overwrite", a.overwrite, "replace a previous dryer model run's outputs in the -o folder");
-    a.dryer->add_flag("--table2", a.table2, "print paper Table 2 against the model (both presets) instead");
+    a.dryer->add_flag("--overwrite", a.overwrite,
+                      "replace a previous dryer model run's outputs in the -o folder");
+    a.dryer->add_flag("--table2", a.table2,
+                      "print paper Table 2 against the model (both presets) instead");
 
-    a.check = a.cli.add_subcommand("check", "validate a configuration and print every derived quantity");
+    a.check =
+        a.cli.add_subcommand("check", "validate a configuration and print every derived quantity");
     a.check->add_option("config", a.config_file, "TOML configuration")->check(CLI::ExistingFile);
     a.check->add_option("--set", a.sets, "override a key")->take_all();
 
-    a.config = a.cli.add_subcommand("config", "print the default configuration or the key reference");
-    a.config->add_option("which", a.which, "'default': the embedded default configuration; 'doc': the "
-                                           "key reference (docs/configuration.md)")
-        ->required()->check(CLI::IsMember({"default", "doc"}));
-
+    a.config =
+        a.cli.add_subcommand("config", "print the default configuration or the key reference");
+    a.config
+        ->add_option("which", a.which,
+                     "'default': the embedded default configuration; 'doc': the "
+                     "key reference (docs/configuration.md)")
+        ->required()
+        ->check(CLI::IsMember({"default", "doc"}));
 }
 
 void declare_study_calibrate(CommandLine& a) {
-    a.study = a.cli.add_subcommand("study", "loadings x seeds: runs, study.csv/.json and the thickness/density "
-                                              "vs loading plot (paper Fig. 6)");
+    a.study = a.cli.add_subcommand(
+        "study", "loadings x seeds: runs, study.csv/.json and the thickness/density "
+                 "vs loading plot (paper Fig. 6)");
     a.study->add_option("config", a.config_file, "TOML configuration")->check(CLI::ExistingFile);
-    a.study->add_option("-o,--output", a.out_dir, "output folder (default out/<name>-study-<timestamp>)");
+    a.study->add_option("-o,--output", a.out_dir,
+                        "output folder (default out/<name>-study-<timestamp>)");
     a.study->add_option("--set", a.sets, "override a key")->take_all();
-    a.study->add_option("--loadings", a.study_loadings,
-                      "areal loadings, comma separated, in mg/cm^2 or with units (default study.loadings, "
-                      "else film.areal_loading)");
+    a.study->add_option(
+        "--loadings", a.study_loadings,
+        "areal loadings, comma separated, in mg/cm^2 or with units (default study.loadings, "
+        "else film.areal_loading)");
     a.study->add_option("--seeds", a.study_opt.seeds, "runs per loading (default study.seeds)")
         ->check(CLI::PositiveNumber);
     a.study->add_option("--threads", a.study_opt.threads, "threads per run (default cores / runs)")
@@ -147,69 +166,105 @@ void declare_study_calibrate(CommandLine& a) {
         ->check(CLI::PositiveNumber);
     a.study->add_flag("--quiet", a.study_opt.quiet, "only the final table");
     a.study->add_flag("--no-plots", a.no_plots, "skip the matplotlib plots");
-    a.study->add_flag("--overwrite", a.overwrite, "replace a previous study's outputs (its runs included) in the -o folder");
-    a.study->add_flag("--resume", a.study_opt.resume,
-                    "continue the stopped study in -o DIR: completed runs are kept, stopped ones continue "
-                    "from their checkpoints, the rest start");
-    a.study->add_option("--scheduler", a.scheduler,
-                      "where the runs run: local (child processes) or slurm (a job array; = --set "
-                      "scheduler.type=...)")
+    a.study->add_flag("--overwrite", a.overwrite,
+                      "replace a previous study's outputs (its runs included) in the -o folder");
+    a.study->add_flag(
+        "--resume", a.study_opt.resume,
+        "continue the stopped study in -o DIR: completed runs are kept, stopped ones continue "
+        "from their checkpoints, the rest start");
+    a.study
+        ->add_option("--scheduler", a.scheduler,
+                     "where the runs run: local (child processes) or slurm (a job array; = --set "
+                     "scheduler.type=...)")
         ->check(CLI::IsMember({"local", "slurm"}));
 
-    a.calibrate = a.cli.add_subcommand("calibrate", "fit config parameters to measured targets ([calibration]; "
-                                                      "docs/calibration.md): evaluations.csv, calibrated.toml, plots");
-    a.calibrate->add_option("config", a.config_file, "TOML configuration with a [calibration] section")
-        ->required()->check(CLI::ExistingFile);
-    a.calibrate->add_option("-o,--output", a.out_dir, "output folder (default out/<name>-calibrate-<timestamp>)");
+    a.calibrate = a.cli.add_subcommand(
+        "calibrate", "fit config parameters to measured targets ([calibration]; "
+                     "docs/calibration.md): evaluations.csv, calibrated.toml, plots");
+    a.calibrate
+        ->add_option("config", a.config_file, "TOML configuration with a [calibration] section")
+        ->required()
+        ->check(CLI::ExistingFile);
+    a.calibrate->add_option("-o,--output", a.out_dir,
+                            "output folder (default out/<name>-calibrate-<timestamp>)");
     a.calibrate->add_option("--set", a.sets, "override a key")->take_all();
-    a.calibrate->add_option("--jobs", a.cal_opt.jobs, "local: runs at a time; slurm: evaluations per job array (default 1)")
+    a.calibrate
+        ->add_option("--jobs", a.cal_opt.jobs,
+                     "local: runs at a time; slurm: evaluations per job array (default 1)")
         ->check(CLI::PositiveNumber);
-    a.calibrate->add_option("--threads", a.cal_opt.threads, "threads per local run (default cores / jobs)")
+    a.calibrate
+        ->add_option("--threads", a.cal_opt.threads, "threads per local run (default cores / jobs)")
         ->check(CLI::PositiveNumber);
-    a.calibrate->add_flag("--resume", a.cal_opt.resume,
-                        "continue the calibration in -o DIR where it stopped (finished evaluations are kept)");
-    a.calibrate->add_option("--scheduler", a.scheduler, "local or slurm (= --set scheduler.type=...)")
+    a.calibrate->add_flag(
+        "--resume", a.cal_opt.resume,
+        "continue the calibration in -o DIR where it stopped (finished evaluations are kept)");
+    a.calibrate
+        ->add_option("--scheduler", a.scheduler, "local or slurm (= --set scheduler.type=...)")
         ->check(CLI::IsMember({"local", "slurm"}));
     a.calibrate->add_flag("--quiet", a.cal_opt.quiet, "only warnings and the result");
     a.calibrate->add_flag("--no-plots", a.no_plots, "skip the matplotlib plots");
-
 }
 
 void declare_analyze_bench(CommandLine& a) {
-    a.analyze = a.cli.add_subcommand("analyze", "structure analysis of a particle snapshot (ours, the peers' CSV, "
-                                                  "LAMMPS/LIGGGHTS data or dump): thickness, density, profiles, "
-                                                  "coordination, pore sizes, voxel image");
-    a.analyze->add_option("snapshot", a.an.snapshot, "particle file (final.csv, CSV, LAMMPS data or dump), or a run "
-                                                 "folder (its final.csv)")
-        ->required()->check(CLI::ExistingPath);
-    a.analyze->add_option("-o,--output", a.out_dir, "output folder (default: analysis/ beside the snapshot)");
-    a.analyze->add_option("--config", a.an_config,
-                        "config with the formulation and box (default: config.toml beside the snapshot, "
-                        "else the embedded default)")->check(CLI::ExistingFile);
+    a.analyze = a.cli.add_subcommand(
+        "analyze", "structure analysis of a particle snapshot (ours, the peers' CSV, "
+                   "LAMMPS/LIGGGHTS data or dump): thickness, density, profiles, "
+                   "coordination, pore sizes, voxel image");
+    a.analyze
+        ->add_option("snapshot", a.an.snapshot,
+                     "particle file (final.csv, CSV, LAMMPS data or dump), or a run "
+                     "folder (its final.csv)")
+        ->required()
+        ->check(CLI::ExistingPath);
+    a.analyze->add_option("-o,--output", a.out_dir,
+                          "output folder (default: analysis/ beside the snapshot)");
+    a.analyze
+        ->add_option(
+            "--config", a.an_config,
+            "config with the formulation and box (default: config.toml beside the snapshot, "
+            "else the embedded default)")
+        ->check(CLI::ExistingFile);
     a.analyze->add_option("--set", a.sets, "override a config key")->take_all();
-    a.analyze->add_option("--voxel", a.an_voxel, "voxel edge, e.g. 0.1um (a bare number is um; 0 = no voxel analysis; default analysis.voxel_size)");
-    a.analyze->add_option("--dz", a.an_dz, "slab width of the height profiles (bare number: um; default analysis.profile_dz)");
-    a.analyze->add_option("--contact-gap", a.an_gap, "surface gap still counted as contact for coordination (bare: um; default analysis.contact_gap)");
-    a.analyze->add_option("--pore-top", a.an_pore_top,
-                        "top of the pore statistics: half_solid (robust thickness) or highest (highest top)")
+    a.analyze->add_option("--voxel", a.an_voxel,
+                          "voxel edge, e.g. 0.1um (a bare number is um; 0 = no voxel analysis; "
+                          "default analysis.voxel_size)");
+    a.analyze->add_option(
+        "--dz", a.an_dz,
+        "slab width of the height profiles (bare number: um; default analysis.profile_dz)");
+    a.analyze->add_option("--contact-gap", a.an_gap,
+                          "surface gap still counted as contact for coordination (bare: um; "
+                          "default analysis.contact_gap)");
+    a.analyze
+        ->add_option(
+            "--pore-top", a.an_pore_top,
+            "top of the pore statistics: half_solid (robust thickness) or highest (highest top)")
         ->check(CLI::IsMember({"half_solid", "highest"}));
-    a.analyze->add_option("--cb-type", a.an.cb_type, "the file's particle type of the CB spheres (default: n + 1 for n "
-                                                 "NCM classes in the config); every other type is NCM")
+    a.analyze
+        ->add_option("--cb-type", a.an.cb_type,
+                     "the file's particle type of the CB spheres (default: n + 1 for n "
+                     "NCM classes in the config); every other type is NCM")
         ->check(CLI::PositiveNumber);
-    a.analyze->add_flag("--export", a.an.export_voxels, "write the voxel image: structure.raw + .json + .mhd");
-    a.analyze->add_flag("--tiff", a.an.tiff, "also write structure.tif (multi-page, one page per z layer)");
-    a.analyze->add_flag("--no-voxels", a.an_no_voxels, "only the particle-based numbers (no pore sizes, no transport solves)");
-    a.analyze->add_option("--threads", a.an.threads, "OpenMP threads (default all cores)")->check(CLI::PositiveNumber);
+    a.analyze->add_flag("--export", a.an.export_voxels,
+                        "write the voxel image: structure.raw + .json + .mhd");
+    a.analyze->add_flag("--tiff", a.an.tiff,
+                        "also write structure.tif (multi-page, one page per z layer)");
+    a.analyze->add_flag("--no-voxels", a.an_no_voxels,
+                        "only the particle-based numbers (no pore sizes, no transport solves)");
+    a.analyze->add_option("--threads", a.an.threads, "OpenMP threads (default all cores)")
+        ->check(CLI::PositiveNumber);
     a.analyze->add_flag("--quiet", a.an.quiet, "only the result lines");
     a.analyze->add_flag("--no-plots", a.no_plots, "skip the matplotlib plots");
-    a.analyze->add_flag("--overwrite", a.overwrite, "replace a previous analysis in the output folder");
+    a.analyze->add_flag("--overwrite", a.overwrite,
+                        "replace a previous analysis in the output folder");
 
-    a.bench = a.cli.add_subcommand("bench", "the peers' granular benchmark (../shared/peers) in DryDEM");
-    a.bench->add_option("data", a.bench_opt.data, "settled bed (LAMMPS data or CSV)")->required()->check(CLI::ExistingFile);
+    a.bench =
+        a.cli.add_subcommand("bench", "the peers' granular benchmark (../shared/peers) in DryDEM");
+    a.bench->add_option("data", a.bench_opt.data, "settled bed (LAMMPS data or CSV)")
+        ->required()
+        ->check(CLI::ExistingFile);
     a.bench->add_option("--steps", a.bench_opt.steps, "timed steps");
     a.bench->add_option("--warmup", a.bench_opt.warmup, "untimed warm-up steps");
     a.bench->add_option("--threads", a.bench_opt.threads, "OpenMP threads");
-
 }
 
 /// The command-line integers, checked as the issue of hostile input asks (no sign, no overflow,
@@ -220,7 +275,8 @@ void check_integers(CommandLine& a) {
         a.seed = cli_integer("--seed", a.seed_text, std::numeric_limits<std::int64_t>::max(),
                              "an integer 0..9223372036854775807");
     if (a.threads_opt->count() > 0) {
-        a.threads = cli_integer("--threads", a.threads_text, 1024, "an integer 0..1024 (0 = all cores)");
+        a.threads =
+            cli_integer("--threads", a.threads_text, 1024, "an integer 0..1024 (0 = all cores)");
         check_threads("--threads", long(*a.threads));
     }
     if (a.stop_after_opt->count() > 0)
@@ -231,7 +287,8 @@ void check_integers(CommandLine& a) {
         check_threads("--threads", n);
     if (!a.scheduler.empty()) a.sets.push_back("scheduler.type=\"" + a.scheduler + "\"");
     if (a.seed && a.resume_dir.empty()) a.sets.push_back(fmt::format("run.seed={}", *a.seed));
-    if (a.threads && a.resume_dir.empty()) a.sets.push_back(fmt::format("run.threads={}", *a.threads));
+    if (a.threads && a.resume_dir.empty())
+        a.sets.push_back(fmt::format("run.threads={}", *a.threads));
 }
 
 int analyze_command(CommandLine& a) {
@@ -242,34 +299,46 @@ int analyze_command(CommandLine& a) {
     };
     if (std::filesystem::is_directory(a.an.snapshot)) {
         if (!std::filesystem::exists(a.an.snapshot / "final.csv"))
-            throw InputError(fmt::format("{} is a folder without final.csv (not a finished run); give "
-                                         "a particle file", a.an.snapshot.string()));
+            throw InputError(
+                fmt::format("{} is a folder without final.csv (not a finished run); give "
+                            "a particle file",
+                            a.an.snapshot.string()));
         a.an.snapshot /= "final.csv";
     }
     const std::filesystem::path beside = a.an.snapshot.parent_path() / "config.toml";
     if (a.an_config.empty() && std::filesystem::exists(beside)) a.an_config = beside.string();
     const Config c = load(a.an_config, a.sets);
-    a.an.analysis.voxel = a.an_no_voxels ? 0.0 : a.an_voxel.empty() ? c.analysis_voxel_size : length(a.an_voxel, "--voxel");
+    a.an.analysis.voxel = a.an_no_voxels       ? 0.0
+                          : a.an_voxel.empty() ? c.analysis_voxel_size
+                                               : length(a.an_voxel, "--voxel");
     a.an.analysis.profile_dz = a.an_dz.empty() ? c.analysis_profile_dz : length(a.an_dz, "--dz");
-    a.an.analysis.contact_gap = a.an_gap.empty() ? c.analysis_contact_gap : length(a.an_gap, "--contact-gap");
+    a.an.analysis.contact_gap =
+        a.an_gap.empty() ? c.analysis_contact_gap : length(a.an_gap, "--contact-gap");
     a.an.analysis.pore_top = a.an_pore_top.empty() ? c.analysis_pore_top : a.an_pore_top;
     set_transport_options(a.an.analysis, c);
-    if (a.an_no_voxels) a.an.analysis.transport.voxels.clear(); // the transport solves are voxel work too
-    if (a.an.analysis.voxel < 0.0) throw InputError(fmt::format("--voxel {}: must be positive (0 = none)", a.an_voxel));
-    if (!(a.an.analysis.profile_dz > 0.0)) throw InputError(fmt::format("--dz {}: must be positive", a.an_dz));
-    if (a.an.analysis.contact_gap < 0.0) throw InputError(fmt::format("--contact-gap {}: must be >= 0", a.an_gap));
-    a.an.output_dir = a.out_dir.empty() ? a.an.snapshot.parent_path() / "analysis" : std::filesystem::path(a.out_dir);
+    if (a.an_no_voxels)
+        a.an.analysis.transport.voxels.clear(); // the transport solves are voxel work too
+    if (a.an.analysis.voxel < 0.0)
+        throw InputError(fmt::format("--voxel {}: must be positive (0 = none)", a.an_voxel));
+    if (!(a.an.analysis.profile_dz > 0.0))
+        throw InputError(fmt::format("--dz {}: must be positive", a.an_dz));
+    if (a.an.analysis.contact_gap < 0.0)
+        throw InputError(fmt::format("--contact-gap {}: must be >= 0", a.an_gap));
+    a.an.output_dir = a.out_dir.empty() ? a.an.snapshot.parent_path() / "analysis"
+                                        : std::filesystem::path(a.out_dir);
     a.an.plots = !a.no_plots;
     const OutputLock lock(a.an.output_dir);
     prepare_output_folder(a.an.output_dir, analysis_output(), a.overwrite);
     if (!a.an.quiet)
-        fmt::print("config: {}\n", a.an_config.empty() ? std::string("<embedded default>") : a.an_config);
+        fmt::print("config: {}\n",
+                   a.an_config.empty() ? std::string("<embedded default>") : a.an_config);
     return app::run_analyze(c, a.an);
 }
 
 int check_command(CommandLine& a) {
     Config c = load(a.config_file, a.sets);
-    if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c); // rates as the run uses them
+    if (c.dryer_schedule == "model")
+        c = dryer::with_model_schedule(c); // rates as the run uses them
     app::print_check(c);
     return 0;
 }
@@ -296,11 +365,14 @@ int study_command(CommandLine& a) {
         if (item.find_first_not_of(" ") == std::string::npos) continue;
         // A bare number is mg/cm^2, the unit of the paper and of process engineers.
         if (item.find_first_not_of("0123456789.eE+- ") == std::string::npos) item += " mg/cm^2";
-        a.study_opt.loadings.push_back(parse_quantity(item, Dimension::areal_density, "--loadings"));
+        a.study_opt.loadings.push_back(
+            parse_quantity(item, Dimension::areal_density, "--loadings"));
     }
     const OutputLock lock(a.study_opt.output_dir);
-    if (a.study_opt.resume && a.overwrite) throw InputError("study: --resume and --overwrite exclude each other");
-    if (!a.study_opt.resume) prepare_output_folder(a.study_opt.output_dir, study_output(), a.overwrite);
+    if (a.study_opt.resume && a.overwrite)
+        throw InputError("study: --resume and --overwrite exclude each other");
+    if (!a.study_opt.resume)
+        prepare_output_folder(a.study_opt.output_dir, study_output(), a.overwrite);
     return app::run_study(c, a.study_opt);
 }
 
@@ -320,11 +392,12 @@ int dryer_command(CommandLine& a) {
 
 int run_command(CommandLine& a) {
     if (!a.resume_dir.empty()) {
-        if (!a.config_file.empty() || !a.sets.empty() || !a.particles.empty() || !a.out_dir.empty() ||
-            a.seed || a.couple_dryer || a.overwrite)
-            throw InputError("--resume DIR continues a run with the config stored in its "
-                             "checkpoint; CONFIG, --set, --seed, --particles, -o, --overwrite and "
-                             "--couple-dryer are not allowed with it (only --threads, --quiet, --no-plots)");
+        if (!a.config_file.empty() || !a.sets.empty() || !a.particles.empty() ||
+            !a.out_dir.empty() || a.seed || a.couple_dryer || a.overwrite)
+            throw InputError(
+                "--resume DIR continues a run with the config stored in its "
+                "checkpoint; CONFIG, --set, --seed, --particles, -o, --overwrite and "
+                "--couple-dryer are not allowed with it (only --threads, --quiet, --no-plots)");
     }
     Config c = a.resume_dir.empty() ? load(a.config_file, a.sets) : resume_config(a.resume_dir);
     if (!a.resume_dir.empty() && a.threads) c.threads = int(*a.threads);
@@ -336,7 +409,9 @@ int run_command(CommandLine& a) {
     std::signal(SIGINT, [](int sig) { request_stop(sig); });
     std::signal(SIGTERM, [](int sig) { request_stop(sig); });
     RunOptions o;
-    o.output_dir = !a.resume_dir.empty() ? a.resume_dir : a.out_dir.empty() ? default_output_dir(c) : a.out_dir;
+    o.output_dir = !a.resume_dir.empty() ? a.resume_dir
+                   : a.out_dir.empty()   ? default_output_dir(c)
+                                         : a.out_dir;
     o.resume = !a.resume_dir.empty();
     // Never two runs in one folder, never a new run over an old one's files (old frames would
     // mix with the new); a resumed run continues its own folder as it is.
@@ -358,7 +433,8 @@ int run_command(CommandLine& a) {
 int main(int argc, char** argv) {
     CommandLine a;
     a.cli.require_subcommand(0, 1);
-    a.cli.set_version_flag("--version", fmt::format("drydem {} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH));
+    a.cli.set_version_flag("--version",
+                           fmt::format("drydem {} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH));
     declare_run(a);
     declare_dryer_check_config(a);
     declare_study_calibrate(a);
@@ -372,8 +448,10 @@ int main(int argc, char** argv) {
     try {
         check_integers(a);
         if (*a.config) {
-            if (a.which == "doc") std::cout << config_reference_markdown();
-            else std::cout << default_config_toml();
+            if (a.which == "doc")
+                std::cout << config_reference_markdown();
+            else
+                std::cout << default_config_toml();
             return 0;
         }
         if (*a.bench) return app::run_bench(a.bench_opt);

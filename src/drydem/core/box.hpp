@@ -15,10 +15,14 @@ struct Box {
     [[nodiscard]] Vec3 minimum_image(const Vec3& a, const Vec3& b) const {
         Vec3 d = b - a;
         // Branches instead of nearbyint(d/l): no division in the pair loop.
-        if (d.x > 0.5 * lx) d.x -= lx;
-        else if (d.x < -0.5 * lx) d.x += lx;
-        if (d.y > 0.5 * ly) d.y -= ly;
-        else if (d.y < -0.5 * ly) d.y += ly;
+        if (d.x > 0.5 * lx)
+            d.x -= lx;
+        else if (d.x < -0.5 * lx)
+            d.x += lx;
+        if (d.y > 0.5 * ly)
+            d.y -= ly;
+        else if (d.y < -0.5 * ly)
+            d.y += ly;
         return d;
     }
     /// Wraps x and y into [0, l). A particle moves far less than a period per step, so one

@@ -12,19 +12,19 @@
 namespace drydem {
 
 struct ParticleStore {
-    std::vector<std::uint32_t> id;      ///< global, stable particle id
-    std::vector<std::uint8_t> species;  ///< index into the species table
-    std::vector<double> radius;         ///< [m]
-    std::vector<double> density;        ///< particle density [kg/m^3] (CB: carbon + pore NMP, M-1.3)
-    std::vector<double> mass;           ///< [kg]
-    std::vector<double> inv_mass;       ///< [1/kg]
-    std::vector<double> inv_inertia;    ///< 1/I with I = (2/5) m r^2 [1/(kg m^2)]
-    std::vector<Vec3> position;         ///< [m], x and y wrapped into the box
-    std::vector<Vec3> velocity;         ///< [m/s]
-    std::vector<Vec3> omega;            ///< angular velocity [rad/s]
-    std::vector<Vec3> force;            ///< [N]
-    std::vector<Vec3> torque;           ///< [N m]
-    std::vector<Vec3> wall_history;     ///< tangential spring of the substrate contact [m] (M-2.3)
+    std::vector<std::uint32_t> id;     ///< global, stable particle id
+    std::vector<std::uint8_t> species; ///< index into the species table
+    std::vector<double> radius;        ///< [m]
+    std::vector<double> density;       ///< particle density [kg/m^3] (CB: carbon + pore NMP, M-1.3)
+    std::vector<double> mass;          ///< [kg]
+    std::vector<double> inv_mass;      ///< [1/kg]
+    std::vector<double> inv_inertia;   ///< 1/I with I = (2/5) m r^2 [1/(kg m^2)]
+    std::vector<Vec3> position;        ///< [m], x and y wrapped into the box
+    std::vector<Vec3> velocity;        ///< [m/s]
+    std::vector<Vec3> omega;           ///< angular velocity [rad/s]
+    std::vector<Vec3> force;           ///< [N]
+    std::vector<Vec3> torque;          ///< [N m]
+    std::vector<Vec3> wall_history;    ///< tangential spring of the substrate contact [m] (M-2.3)
 
     [[nodiscard]] std::size_t size() const { return id.size(); }
 

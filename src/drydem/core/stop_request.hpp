@@ -12,7 +12,9 @@ inline std::atomic<int>& stop_signal() {
     return signal;
 }
 /// Asks every running simulation to stop after its current step (async-signal-safe).
-inline void request_stop(int signal_number) { stop_signal().store(signal_number, std::memory_order_relaxed); }
+inline void request_stop(int signal_number) {
+    stop_signal().store(signal_number, std::memory_order_relaxed);
+}
 inline int stop_requested() { return stop_signal().load(std::memory_order_relaxed); }
 
 } // namespace drydem

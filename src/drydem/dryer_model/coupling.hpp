@@ -15,20 +15,21 @@ namespace drydem::dryer {
 
 /// One pass of the iteration.
 struct CouplingIteration {
-    int iteration = 0;                 ///< 1-based
-    double porosity_in = 0.0;          ///< ε_f assumed by the dryer model
-    double final_thickness_in = 0.0;   ///< h_f = L/(ρ_s (1 - ε_f)) assumed by the dryer [m]
-    std::vector<double> rates;         ///< s_k handed to the DEM [m/s]
+    int iteration = 0;               ///< 1-based
+    double porosity_in = 0.0;        ///< ε_f assumed by the dryer model
+    double final_thickness_in = 0.0; ///< h_f = L/(ρ_s (1 - ε_f)) assumed by the dryer [m]
+    std::vector<double> rates;       ///< s_k handed to the DEM [m/s]
     std::optional<double> consolidation_time; ///< dryer model [s]
-    double final_thickness_dem = 0.0;  ///< h_f from the DEM [m]
-    double porosity_dem = 0.0;         ///< 1 - L/(ρ_s h_f,DEM)
-    double change = 0.0;               ///< h_f,DEM - h_f,in [m]
+    double final_thickness_dem = 0.0;         ///< h_f from the DEM [m]
+    double porosity_dem = 0.0;                ///< 1 - L/(ρ_s h_f,DEM)
+    double change = 0.0;                      ///< h_f,DEM - h_f,in [m]
 };
 
 struct CouplingResult {
     bool converged = false;
     std::vector<CouplingIteration> iterations;
-    std::string message; ///< one line: converged after N / stopped at max iterations (+ last change)
+    std::string
+        message; ///< one line: converged after N / stopped at max iterations (+ last change)
 };
 
 /// The DEM: runs with the given shrinkage rates [m/s] (iteration number 1-based and the dryer's
@@ -39,8 +40,8 @@ using DemRunner =
 /// Runs the iteration from params.final_porosity. Stops when |h_f,DEM - h_f,in| < tolerance
 /// (converged) or after max_iterations (not converged, message says so). on_iteration is called
 /// after every pass (logging).
-[[nodiscard]] CouplingResult couple_dryer_dem(
-    FilmDryerParams params, const DemRunner& dem, double tolerance, int max_iterations,
-    const std::function<void(const CouplingIteration&)>& on_iteration = {});
+[[nodiscard]] CouplingResult
+couple_dryer_dem(FilmDryerParams params, const DemRunner& dem, double tolerance, int max_iterations,
+                 const std::function<void(const CouplingIteration&)>& on_iteration = {});
 
 } // namespace drydem::dryer

@@ -24,13 +24,16 @@ nlohmann::json inputs_json(const FilmDryerParams& p) {
     return {
         {"preset", p.preset},
         {"mass_fractions", {{"ncm", p.w_ncm}, {"pvdf", p.w_pvdf}, {"cb", p.w_cb}}},
-        {"densities_kg_m3", {{"ncm", p.rho_ncm}, {"pvdf", p.rho_pvdf}, {"cb", p.rho_cb}, {"nmp", p.liquid_density}}},
+        {"densities_kg_m3",
+         {{"ncm", p.rho_ncm}, {"pvdf", p.rho_pvdf}, {"cb", p.rho_cb}, {"nmp", p.liquid_density}}},
         {"heat_capacities_J_kg_K", {{"ncm", p.cp_ncm}, {"pvdf", p.cp_pvdf}, {"cb", p.cp_cb}}},
         {"areal_loading_kg_m2", p.areal_loading},
         {"solids_mass_fraction", p.solids_mass_fraction},
         {"liquid_density_temperature_dependent", p.liquid_density_temperature},
-        {"substrate", {{"thickness_m", p.substrate_thickness}, {"density_kg_m3", p.substrate_density},
-                       {"heat_capacity_J_kg_K", p.substrate_heat_capacity}}},
+        {"substrate",
+         {{"thickness_m", p.substrate_thickness},
+          {"density_kg_m3", p.substrate_density},
+          {"heat_capacity_J_kg_K", p.substrate_heat_capacity}}},
         {"line_speed_m_s", p.line_speed},
         {"zones", zones},
         {"bottom_heat_transfer_factor", p.bottom_factor},
@@ -120,12 +123,13 @@ void write_dryer_outputs(const std::filesystem::path& dir, const FilmDryerParams
     std::ofstream csv(dir / "dryer.csv");
     csv << "position_m,time_s,film_temperature_C,dryer_temperature_C,solvent_mass_fraction,"
            "film_thickness_um,evaporation_rate_g_m2_s,consolidated\n";
-    const std::size_t stride = std::max<std::size_t>(1, std::size_t(std::lround(0.1 / p.time_step)));
+    const std::size_t stride =
+        std::max<std::size_t>(1, std::size_t(std::lround(0.1 / p.time_step)));
     for (std::size_t i = 0; i < run.samples.size(); ++i) {
         if (i % stride != 0 && i + 1 != run.samples.size()) continue;
         const DryerSample& s = run.samples[i];
-        csv << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{}\n", s.position, s.time,
-                           s.temperature - kelvin_offset, s.air_temperature - kelvin_offset,
+        csv << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{}\n", s.position,
+                           s.time, s.temperature - kelvin_offset, s.air_temperature - kelvin_offset,
                            s.solvent_fraction, s.thickness * 1e6, s.evaporation_rate * 1e3,
                            int(s.consolidated));
     }

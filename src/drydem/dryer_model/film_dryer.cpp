@@ -14,18 +14,21 @@ using namespace constants;
 
 double preset_analogy_exponent(std::string_view preset) {
     if (preset == "physical") return 1.0 / 3.0; // Chilton-Colburn (D-2.4)
-    if (preset == "table2") return 0.42;        // impinging-jet exponent, calibrated to Table 2 (D-3)
-    throw InputError(fmt::format("dryer preset '{}' is unknown; allowed: \"physical\", \"table2\"", preset));
+    if (preset == "table2") return 0.42; // impinging-jet exponent, calibrated to Table 2 (D-3)
+    throw InputError(
+        fmt::format("dryer preset '{}' is unknown; allowed: \"physical\", \"table2\"", preset));
 }
 
 FilmGeometry film_geometry(const FilmDryerParams& p) {
     FilmGeometry g{};
     g.solids_density = solids_density(p.w_ncm, p.rho_ncm, p.w_pvdf, p.rho_pvdf, p.w_cb, p.rho_cb);
     g.solids_height = p.areal_loading / g.solids_density;
-    g.initial_liquid = p.areal_loading * (1.0 - p.solids_mass_fraction) / p.solids_mass_fraction; // D-2.1
-    const double rho_l0 = p.liquid_density_temperature ? liquid_density(p.initial_temperature) : p.liquid_density;
-    g.wet_height = g.solids_height + g.initial_liquid / rho_l0;                                   // Eq. 3
-    g.final_height = g.solids_height / (1.0 - p.final_porosity);                                  // D-2.5
+    g.initial_liquid =
+        p.areal_loading * (1.0 - p.solids_mass_fraction) / p.solids_mass_fraction; // D-2.1
+    const double rho_l0 =
+        p.liquid_density_temperature ? liquid_density(p.initial_temperature) : p.liquid_density;
+    g.wet_height = g.solids_height + g.initial_liquid / rho_l0;  // Eq. 3
+    g.final_height = g.solids_height / (1.0 - p.final_porosity); // D-2.5
     g.solids_heat_capacity = p.w_ncm * p.cp_ncm + p.w_pvdf * p.cp_pvdf + p.w_cb * p.cp_cb;
     g.substrate_mass = p.substrate_density * p.substrate_thickness;
     return g;
@@ -33,12 +36,13 @@ FilmGeometry film_geometry(const FilmDryerParams& p) {
 
 GasSide gas_side(const FilmDryerParams& p, const DryerZone& z, double T) {
     GasSide g{};
-    g.film_temperature = 0.5 * (T + z.air_temperature);             // D-2.3: T_m
+    g.film_temperature = 0.5 * (T + z.air_temperature); // D-2.3: T_m
     const double Tm = g.film_temperature;
     const double rho_g = air_density(Tm, p.pressure), cp_g = air_heat_capacity(Tm);
     g.diffusion = diffusion_coefficient_nmp_air(Tm, p.pressure);
-    g.lewis = air_thermal_conductivity(Tm) / (rho_g * cp_g) / g.diffusion;     // D-2.4
-    g.mass_transfer = z.heat_transfer_top / (rho_g * cp_g) * std::pow(g.lewis, p.analogy_exponent - 1.0);
+    g.lewis = air_thermal_conductivity(Tm) / (rho_g * cp_g) / g.diffusion; // D-2.4
+    g.mass_transfer =
+        z.heat_transfer_top / (rho_g * cp_g) * std::pow(g.lewis, p.analogy_exponent - 1.0);
     g.molar_density = p.pressure / (gas_constant * Tm);
     return g;
 }
@@ -57,8 +61,11 @@ struct State {
     double T, m_l, heat_in, evaporated, latent_out, liquid_enthalpy_out;
 };
 State axpy(const State& y, double a, const State& d) {
-    return {y.T + a * d.T, y.m_l + a * d.m_l, y.heat_in + a * d.heat_in,
-            y.evaporated + a * d.evaporated, y.latent_out + a * d.latent_out,
+    return {y.T + a * d.T,
+            y.m_l + a * d.m_l,
+            y.heat_in + a * d.heat_in,
+            y.evaporated + a * d.evaporated,
+            y.latent_out + a * d.latent_out,
             y.liquid_enthalpy_out + a * d.liquid_enthalpy_out};
 }
 
@@ -75,16 +82,20 @@ struct Model {
     FilmGeometry g;
     RangeLog* ranges;
 
-    double rho_l(double T) const { return p.liquid_density_temperature ? liquid_density(T) : p.liquid_density; }
+    double rho_l(double T) const {
+        return p.liquid_density_temperature ? liquid_density(T) : p.liquid_density;
+    }
 
     /// Right-hand side of D-2.1/D-2.2 in zone z; returns d(state)/dt and ṁ.
-    State rhs(const DryerZone& z, bool consolidated, double m_l_crit, const State& y, double& mdot) const {
+    State rhs(const DryerZone& z, bool consolidated, double m_l_crit, const State& y,
+              double& mdot) const {
         const double T = y.T, m_l = std::max(0.0, y.m_l);
         const GasSide gs = gas_side(p, z, T);
         if (ranges) ranges->film(T), ranges->gas(gs.film_temperature);
         mdot = 0.0;
         if (m_l > 0.0) {
-            const double y_s = std::min(vapour_pressure(T, p.vapour_pressure) / p.pressure, 0.999); // D-2.3
+            const double y_s =
+                std::min(vapour_pressure(T, p.vapour_pressure) / p.pressure, 0.999); // D-2.3
             double k_eff = gs.mass_transfer;
             if (consolidated) {
                 // D-2.6: receding front, vapour diffuses through the dry layer of depth s_d.
@@ -97,14 +108,15 @@ struct Model {
         }
         double f_ack = 1.0; // D-2.2 Ackermann correction (optional)
         if (p.ackermann && mdot > 0.0) {
-            const double phi = mdot * vapour_heat_capacity(gs.film_temperature) / z.heat_transfer_top;
+            const double phi =
+                mdot * vapour_heat_capacity(gs.film_temperature) / z.heat_transfer_top;
             f_ack = phi / std::expm1(phi);
         }
         const double q_top = f_ack * z.heat_transfer_top * (z.air_temperature - T);
         const double q_bot = p.bottom_factor * z.heat_transfer_top * (z.air_temperature - T); // A1
-        const double heat_capacity =
-            p.areal_loading * g.solids_heat_capacity + m_l * liquid_heat_capacity(T) +
-            g.substrate_mass * p.substrate_heat_capacity;                                     // C(t)
+        const double heat_capacity = p.areal_loading * g.solids_heat_capacity +
+                                     m_l * liquid_heat_capacity(T) +
+                                     g.substrate_mass * p.substrate_heat_capacity; // C(t)
         const double latent = mdot * enthalpy_of_vaporisation(T) / molar_mass_nmp;
         State d{};
         d.T = (q_top + q_bot - latent) / heat_capacity; // Eq. 14 / D-2.2
@@ -144,10 +156,12 @@ void check_params(const FilmDryerParams& p) {
         const DryerZone& z = p.zones[k];
         if (!(z.length > 0)) bad(fmt::format("zone {} length {} m must be > 0", k + 1, z.length));
         if (!(z.heat_transfer_top > 0))
-            bad(fmt::format("zone {} heat transfer coefficient {} W/(m^2 K) must be > 0", k + 1, z.heat_transfer_top));
+            bad(fmt::format("zone {} heat transfer coefficient {} W/(m^2 K) must be > 0", k + 1,
+                            z.heat_transfer_top));
         if (z.air_temperature < p.initial_temperature)
-            bad(fmt::format("zone {} air temperature {} K is below the initial film temperature {} K",
-                            k + 1, z.air_temperature, p.initial_temperature));
+            bad(fmt::format(
+                "zone {} air temperature {} K is below the initial film temperature {} K", k + 1,
+                z.air_temperature, p.initial_temperature));
     }
 }
 
@@ -155,7 +169,8 @@ void check_params(const FilmDryerParams& p) {
 
 double film_sensible_enthalpy(const FilmDryerParams& p, double T, double m_l) {
     const FilmGeometry g = film_geometry(p);
-    return (p.areal_loading * g.solids_heat_capacity + g.substrate_mass * p.substrate_heat_capacity) *
+    return (p.areal_loading * g.solids_heat_capacity +
+            g.substrate_mass * p.substrate_heat_capacity) *
                (T - p.initial_temperature) +
            m_l * liquid_sensible_enthalpy(p.initial_temperature, T);
 }
@@ -260,13 +275,16 @@ DryerRun simulate_film_dryer(const FilmDryerParams& p) {
     // Out-of-range use of a correlation is reported, never silent (D-5).
     auto check = [&](const ValidityRange& v, double lo, double hi) {
         if (lo < v.t_min || hi > v.t_max)
-            run.warnings.push_back(fmt::format("{} evaluated at {:.2f}-{:.2f} K, outside its validity "
-                                               "range {:g}-{:g} K", v.correlation, lo, hi, v.t_min, v.t_max));
+            run.warnings.push_back(
+                fmt::format("{} evaluated at {:.2f}-{:.2f} K, outside its validity "
+                            "range {:g}-{:g} K",
+                            v.correlation, lo, hi, v.t_min, v.t_max));
     };
     check(p.vapour_pressure.validity, ranges.film_min, ranges.film_max);
     check(enthalpy_of_vaporisation_validity, ranges.film_min, ranges.film_max);
     check(liquid_heat_capacity_validity, ranges.film_min, ranges.film_max);
-    if (p.liquid_density_temperature) check(liquid_density_validity, ranges.film_min, ranges.film_max);
+    if (p.liquid_density_temperature)
+        check(liquid_density_validity, ranges.film_min, ranges.film_max);
     check(diffusion_coefficient_validity, ranges.gas_min, ranges.gas_max);
     check(air_thermal_conductivity_validity, ranges.gas_min, ranges.gas_max);
     check(air_heat_capacity_validity, ranges.gas_min, ranges.gas_max);
@@ -317,8 +335,9 @@ std::vector<double> schedule_rates(const std::vector<SectionRate>& sections) {
         rates.push_back(*s.rate);
     }
     if (rates.empty())
-        throw InputError("dryer model: the film consolidates before a shrinkage rate can be fitted in "
-                         "the first dryer section (D-4); no liquid-level schedule for the DEM");
+        throw InputError(
+            "dryer model: the film consolidates before a shrinkage rate can be fitted in "
+            "the first dryer section (D-4); no liquid-level schedule for the DEM");
     return rates;
 }
 

@@ -12,7 +12,8 @@ double vapour_pressure(double T, const Antoine& k) {
 
 double enthalpy_of_vaporisation(double T) {
     // D-5.2: Watson, Δh_v(T) = Δh_v(T1) ((Tc - T)/(Tc - T1))^0.38 with T1 = 373.15 K.
-    return 51008.0 * std::pow((nmp_critical_temperature - T) / (nmp_critical_temperature - 373.15), 0.38);
+    return 51008.0 *
+           std::pow((nmp_critical_temperature - T) / (nmp_critical_temperature - 373.15), 0.38);
 }
 
 double liquid_heat_capacity(double T) {

@@ -17,24 +17,24 @@ namespace drydem {
 /// Upper limits of what DryDEM sets up: far beyond any electrode film (the paper's largest case
 /// has ~1.6e5 particles and ~1e8 steps), far below what overflows (32-bit particle ids, doubles).
 inline constexpr double max_particles = 1e8;
-inline constexpr double max_steps = 1e12;            ///< estimated DEM steps of the run
-inline constexpr double max_wet_film_height = 0.01;  ///< [m]; wet electrode films are < 1 mm
-inline constexpr double max_dryer_steps = 1e6;       ///< RK4 steps of the dryer model (D-2.7)
+inline constexpr double max_steps = 1e12;           ///< estimated DEM steps of the run
+inline constexpr double max_wet_film_height = 0.01; ///< [m]; wet electrode films are < 1 mm
+inline constexpr double max_dryer_steps = 1e6;      ///< RK4 steps of the dryer model (D-2.7)
 /// Memory per particle: state (13 Vec3), species and ids, ~20 neighbour entries with history
 /// (the estimate `drydem check` prints).
 inline constexpr double bytes_per_particle = 13 * 24.0 + 6 * 8 + 20 * 40;
 
 /// What a configuration implies, as plain doubles (never overflowing integers).
 struct DerivedQuantities {
-    double particles = 0.0;        ///< unrounded total count
-    double wet_film_height = 0.0;  ///< [m]
-    double solids_density = 0.0;   ///< [kg/m^3]
-    double final_thickness = 0.0;  ///< at an uncalendered density (setup/solids.hpp) [m] (M-8.3)
-    double level_travel = 0.0;     ///< of the liquid level until the end criterion [m] (M-8.3)
-    double sim_time = 0.0;         ///< estimated simulated time of the run [s] (M-8.3)
-    double steps = 0.0;            ///< sim_time / run.time_step
-    double memory_bytes = 0.0;     ///< particles x bytes_per_particle + 5 MB
-    double dryer_steps = 0.0;      ///< RK4 steps of the dryer model over all zones
+    double particles = 0.0;       ///< unrounded total count
+    double wet_film_height = 0.0; ///< [m]
+    double solids_density = 0.0;  ///< [kg/m^3]
+    double final_thickness = 0.0; ///< at an uncalendered density (setup/solids.hpp) [m] (M-8.3)
+    double level_travel = 0.0;    ///< of the liquid level until the end criterion [m] (M-8.3)
+    double sim_time = 0.0;        ///< estimated simulated time of the run [s] (M-8.3)
+    double steps = 0.0;           ///< sim_time / run.time_step
+    double memory_bytes = 0.0;    ///< particles x bytes_per_particle + 5 MB
+    double dryer_steps = 0.0;     ///< RK4 steps of the dryer model over all zones
 };
 
 /// Particle-steps per second and core a run is estimated at (the semi-implicit paper scheme
@@ -45,7 +45,7 @@ inline constexpr double wall_time_warning = 86400.0; ///< [s]
 
 /// parse_config, then check_derived_quantities: a configuration every command can run.
 Config load_config(std::string_view toml_text, std::string_view source_name,
-                                 const std::vector<std::string>& overrides = {});
+                   const std::vector<std::string>& overrides = {});
 Config load_config_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
 /// Computes the derived quantities without checking them (InputError only from make_recipe).
@@ -56,7 +56,8 @@ Config load_config_file(const std::string& path, const std::vector<std::string>&
 [[nodiscard]] double estimated_wall_time(const DerivedQuantities& d, int threads);
 
 /// Voxels of the end-of-run voxel image (analysis.voxel_size) for a film of this thickness [m].
-[[nodiscard]] double voxel_image_voxels(const Config& c, const FilmRecipe& r, double final_thickness);
+[[nodiscard]] double voxel_image_voxels(const Config& c, const FilmRecipe& r,
+                                        double final_thickness);
 
 /// The time scales of the smallest particle that bound the step (M-9.2, `drydem check`): Rayleigh
 /// time, Hertz contact time at 1 m/s and at the first level speed, twice the drag relaxation time,
@@ -66,8 +67,8 @@ struct TimeScales {
     double rayleigh = 0.0, contact_at_1m_s = 0.0, contact_at_level_speed = 0.0;
     double drag_relaxation = 0.0, capillary_period = 0.0;
 };
-[[nodiscard]] TimeScales time_scales(const Config& c, const FilmRecipe& r, const ScaledParameters& s,
-                                     const ForceField& ff);
+[[nodiscard]] TimeScales time_scales(const Config& c, const FilmRecipe& r,
+                                     const ScaledParameters& s, const ForceField& ff);
 
 /// Throws InputError when a derived quantity is not finite and positive or beyond the limits
 /// above, naming the keys behind it. `bare_lengths`: length keys the input gave as bare numbers

@@ -38,11 +38,13 @@ double push_length(const FilmRecipe& recipe) {
     return r1 > 0.0 ? 2.0 * r2 / r1 : 0.0;
 }
 
-Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_speed, double thickness) {
+Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_speed,
+                 double thickness) {
     const int cb = recipe.cb_species();
     int ncm = 0; // the largest NCM class
     for (int s = 0; s < cb; ++s)
-        if (recipe.species[std::size_t(s)].diameter > recipe.species[std::size_t(ncm)].diameter) ncm = s;
+        if (recipe.species[std::size_t(s)].diameter > recipe.species[std::size_t(ncm)].diameter)
+            ncm = s;
     const SizeClass &n = recipe.species[std::size_t(ncm)], &c = recipe.species[std::size_t(cb)];
     const double r_n = 0.5 * n.diameter, r_c = 0.5 * c.diameter, m_n = mass_of(n), m_c = mass_of(c);
     const double U = level_speed, H = thickness;
@@ -52,10 +54,13 @@ Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_sp
     // Lubrication at the gap where its resistance freezes (κ_c r_L), CB-CB.
     const LubricationParams& lub = law<LubricationLaw>(ff.pair_params(cb, cb));
     const double r_l = lubrication_radius(r_c, r_c);
-    g.capillary_lubrication = lubrication_resistance(at_gap(r_c, r_c, lub.kappa_c * r_l, m_c, m_c), lub).normal * U / cap(r_c);
+    g.capillary_lubrication =
+        lubrication_resistance(at_gap(r_c, r_c, lub.kappa_c * r_l, m_c, m_c), lub).normal * U /
+        cap(r_c);
     // Push number and the level's push per area at the film's thickness.
     double push_per_area = 0.0;
-    for (const SizeClass& s : recipe.species) push_per_area += 2.0 * double(s.count) * 0.5 * s.diameter * cap(0.5 * s.diameter);
+    for (const SizeClass& s : recipe.species)
+        push_per_area += 2.0 * double(s.count) * 0.5 * s.diameter * cap(0.5 * s.diameter);
     push_per_area /= recipe.base_area * H;
     g.push = g.capillary_drag * H / push_length(recipe);
     g.stokes_ncm = stokes_relaxation_time(m_n, r_n, ff.drag) * U / r_n;
@@ -63,16 +68,23 @@ Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_sp
     g.inertial = (U / H) * n.diameter * std::sqrt(n.density / push_per_area);
     // Surface forces at contact (the law holds them at h_min).
     const PairGeometry cc = at_gap(r_c, r_c, 0.0, m_c, m_c), nc = at_gap(r_n, r_c, 0.0, m_n, m_c);
-    const double vdw_cc = norm(van_der_waals(cc, law<VanDerWaalsLaw>(ff.pair_params(cb, cb))).force_i);
-    const double vdw_nc = norm(van_der_waals(nc, law<VanDerWaalsLaw>(ff.pair_params(ncm, cb))).force_i);
+    const double vdw_cc =
+        norm(van_der_waals(cc, law<VanDerWaalsLaw>(ff.pair_params(cb, cb))).force_i);
+    const double vdw_nc =
+        norm(van_der_waals(nc, law<VanDerWaalsLaw>(ff.pair_params(ncm, cb))).force_i);
     g.vdw_capillary_cb_cb = vdw_cc / cap(r_c);
     g.vdw_capillary_ncm_cb = vdw_nc / cap(r_c);
     g.bond_ncm = std::abs(gravity_buoyancy(r_n, n.density, ff.gravity).z) / cap(r_n);
     // Expected Hertz overlaps under the forces that press these contacts.
-    g.overlap_cb_cb = hertz_overlap(vdw_cc, cc.r_eff, law<HertzMindlinLaw>(ff.pair_params(cb, cb)).e_star) / r_c;
-    g.overlap_ncm_cb = hertz_overlap(cap(r_n), nc.r_eff, law<HertzMindlinLaw>(ff.pair_params(ncm, cb)).e_star) / r_c;
+    g.overlap_cb_cb =
+        hertz_overlap(vdw_cc, cc.r_eff, law<HertzMindlinLaw>(ff.pair_params(cb, cb)).e_star) / r_c;
+    g.overlap_ncm_cb =
+        hertz_overlap(cap(r_n), nc.r_eff, law<HertzMindlinLaw>(ff.pair_params(ncm, cb)).e_star) /
+        r_c;
     g.overlap_ncm_substrate =
-        ff.substrate.empty() ? 0.0 : hertz_overlap(cap(r_n), r_n, ff.substrate[std::size_t(ncm)].e_star) / r_n;
+        ff.substrate.empty()
+            ? 0.0
+            : hertz_overlap(cap(r_n), r_n, ff.substrate[std::size_t(ncm)].e_star) / r_n;
     return g;
 }
 
@@ -81,13 +93,16 @@ DimensionlessGroups dimensionless_groups(const Config& c) {
     const FilmRecipe recipe = make_recipe(c);
     const Config pc = physical_config(c);
     const ScaledParameters sim = scale_parameters(c), phys = scale_parameters(pc);
-    const ForceField ff_sim = make_drying_force_field(c, recipe, sim), ff_phys = make_drying_force_field(pc, recipe, phys);
+    const ForceField ff_sim = make_drying_force_field(c, recipe, sim),
+                     ff_phys = make_drying_force_field(pc, recipe, phys);
     d.push_length = push_length(recipe);
     d.film_thickness = derived_quantities(c).final_thickness;
     for (std::size_t z = 0; z < sim.level_speeds_scaled.size(); ++z) {
         d.level_speeds_physical.push_back(phys.level_speeds_scaled[z]);
-        d.physical.push_back(groups_of(ff_phys, recipe, phys.level_speeds_scaled[z], d.film_thickness));
-        d.simulated.push_back(groups_of(ff_sim, recipe, sim.level_speeds_scaled[z], d.film_thickness));
+        d.physical.push_back(
+            groups_of(ff_phys, recipe, phys.level_speeds_scaled[z], d.film_thickness));
+        d.simulated.push_back(
+            groups_of(ff_sim, recipe, sim.level_speeds_scaled[z], d.film_thickness));
     }
     return d;
 }
@@ -114,7 +129,8 @@ nlohmann::json to_json(const DimensionlessGroups& d) {
                          {"level_speed_physical_m_s", d.level_speeds_physical[z]},
                          {"physical", set(d.physical[z])},
                          {"simulated", set(d.simulated[z])}});
-    return json{{"film_thickness_m", d.film_thickness}, {"push_length_m", d.push_length}, {"zones", zones}};
+    return json{
+        {"film_thickness_m", d.film_thickness}, {"push_length_m", d.push_length}, {"zones", zones}};
 }
 
 } // namespace drydem

@@ -41,14 +41,15 @@ struct Groups {
 };
 
 struct DimensionlessGroups {
-    double push_length = 0.0;    ///< ℓ* [m]
-    double film_thickness = 0.0; ///< H [m]
+    double push_length = 0.0;                  ///< ℓ* [m]
+    double film_thickness = 0.0;               ///< H [m]
     std::vector<double> level_speeds_physical; ///< per dryer zone [m/s]
     std::vector<Groups> physical, simulated;   ///< per dryer zone
 };
 
 /// The groups of one force field (the laws' parameters) at level speed U and thickness H.
-Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_speed, double thickness);
+Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_speed,
+                 double thickness);
 
 /// ℓ* = 2 Σ N_s r_s² / Σ N_s r_s of the recipe [m].
 double push_length(const FilmRecipe& recipe);

@@ -48,7 +48,8 @@ private:
         return {sim_, end_, guard_, timeout, stop, RunClock::now()};
     }
     [[nodiscard]] double wall_total() const {
-        return wall_before_ + std::chrono::duration<double>(RunClock::now() - session_start_).count();
+        return wall_before_ +
+               std::chrono::duration<double>(RunClock::now() - session_start_).count();
     }
     void visit_state(StateFields& f);
 
@@ -65,17 +66,20 @@ private:
     const double t_max_; ///< run.max_process_time [s, simulated]
     RunContext ctx_;
     std::vector<std::unique_ptr<RunObserver>> outputs_;
-    double wall_before_ = 0.0;      ///< wall seconds of the sessions before this one
+    double wall_before_ = 0.0;        ///< wall seconds of the sessions before this one
     std::int32_t threads_before_ = 0; ///< threads of the sessions before this one
 };
 
 DryingRun::DryingRun(const Config& c, const RunOptions& opt)
     : c_(c), opt_(opt),
-      resumed_(opt.resume ? std::optional<RunCheckpoint>(read_run_checkpoint(opt.output_dir)) : std::nullopt),
+      resumed_(opt.resume ? std::optional<RunCheckpoint>(read_run_checkpoint(opt.output_dir))
+                          : std::nullopt),
       status_(!opt.quiet && isatty(STDERR_FILENO)), log_(open_folder()), film_(describe_film(c)),
       sim_(make_simulation()), guard_(guard_policy_of(c.stability_guard), c.time_step_cap(), *log_),
-      end_(c.final_gap > 0.0 ? c.final_gap : film_.recipe.largest_diameter(), film_.scaled.sim_time(c.relaxation)),
-      t_max_(film_.scaled.sim_time(c.max_process_time)), ctx_{c, opt, film_, *log_, status_, session_start_},
+      end_(c.final_gap > 0.0 ? c.final_gap : film_.recipe.largest_diameter(),
+           film_.scaled.sim_time(c.relaxation)),
+      t_max_(film_.scaled.sim_time(c.max_process_time)), ctx_{c,     opt,     film_,
+                                                              *log_, status_, session_start_},
       outputs_(make_run_outputs(ctx_, [this](StateFields& f) { visit_state(f); })) {
     if (resumed_) {
         visit_state(resumed_->progress);
@@ -115,9 +119,11 @@ Simulation DryingRun::make_simulation() {
     // computed once at t = 0.
     es.initial_liquid_level = film_.schedule.level(0.0);
     ForceField forces = make_drying_force_field(c_, film_.recipe, film_.scaled);
-    Simulation sim = resumed_ ? Simulation(std::move(resumed_->engine), film_.box, std::move(forces), es)
-                              : Simulation(std::move(particles), film_.box, std::move(forces), es);
-    sim.set_liquid_level_schedule([schedule = film_.schedule](double t) { return schedule.level(t); });
+    Simulation sim = resumed_
+                         ? Simulation(std::move(resumed_->engine), film_.box, std::move(forces), es)
+                         : Simulation(std::move(particles), film_.box, std::move(forces), es);
+    sim.set_liquid_level_schedule(
+        [schedule = film_.schedule](double t) { return schedule.level(t); });
     return sim;
 }
 
@@ -142,22 +148,28 @@ void DryingRun::start() {
     if (resumed_) {
         if (sim_.threads() != threads_before_)
             log_->warn("--resume with {} threads where the run used {}: the continuation is valid "
-                       "but not bit-identical to an uninterrupted run", sim_.threads(), threads_before_);
-        log_->info("resumed from the checkpoint at step {} (process time {:.4f} s)", sim_.step_count(),
-                   film_.scaled.process_time(sim_.time()));
+                       "but not bit-identical to an uninterrupted run",
+                       sim_.threads(), threads_before_);
+        log_->info("resumed from the checkpoint at step {} (process time {:.4f} s)",
+                   sim_.step_count(), film_.scaled.process_time(sim_.time()));
     } else {
-        guard_.start(sim_); // a resumed run must not: the uninterrupted run only runs it at rebuilds
+        guard_.start(
+            sim_); // a resumed run must not: the uninterrupted run only runs it at rebuilds
     }
-    log_->info("threads {}, integrator {}, dt = {:.3g} s (scaled, cap {:.3g} s), dt*lambda = {:.3g} "
-               "(stable < 2), level speeds {} m/s (scaled)", sim_.threads(), c_.integrator,
-               sim_.settings().dt, c_.time_step_cap(), guard_.indicator(),
-               fmt::join(film_.scaled.level_speeds_scaled, ", "));
+    log_->info(
+        "threads {}, integrator {}, dt = {:.3g} s (scaled, cap {:.3g} s), dt*lambda = {:.3g} "
+        "(stable < 2), level speeds {} m/s (scaled)",
+        sim_.threads(), c_.integrator, sim_.settings().dt, c_.time_step_cap(), guard_.indicator(),
+        fmt::join(film_.scaled.level_speeds_scaled, ", "));
     const DerivedQuantities plan = derived_quantities(c_);
     const double estimate = estimated_wall_time(plan, sim_.threads());
     if (!resumed_ && estimate > wall_time_warning)
-        log_->warn("this run is estimated at {:.3g} days on {} threads ({:.3g} particle-steps at {:.3g} per second "
-                   "and core; the guard may lower the step further): check scaling.time_factor, run.time_step and "
-                   "the box (`drydem check`)", estimate / 86400.0, sim_.threads(), plan.steps * plan.particles,
+        log_->warn("this run is estimated at {:.3g} days on {} threads ({:.3g} particle-steps at "
+                   "{:.3g} per second "
+                   "and core; the guard may lower the step further): check scaling.time_factor, "
+                   "run.time_step and "
+                   "the box (`drydem check`)",
+                   estimate / 86400.0, sim_.threads(), plan.steps * plan.particles,
                    reference_particle_steps_per_core);
     const StepView at = view(false, 0);
     for (auto& o : outputs_) o->open(at, resumed_.has_value());
@@ -175,31 +187,40 @@ void DryingRun::step() {
 void DryingRun::report(EndCriterion::Event event) const {
     if (event == EndCriterion::Event::none) return;
     if (event == EndCriterion::Event::final_at_substrate)
-        log_->warn("the liquid level reached the substrate before the layer top rose {:.4g} um above "
-                   "it; final thickness taken there", end_.final_gap() * 1e6);
+        log_->warn(
+            "the liquid level reached the substrate before the layer top rose {:.4g} um above "
+            "it; final thickness taken there",
+            end_.final_gap() * 1e6);
     log_->info("final thickness {:.4f} um at process time {:.3f} s; relaxing for {} s",
-               end_.final_thickness() * 1e6, film_.scaled.process_time(end_.time_final()), c_.relaxation);
+               end_.final_thickness() * 1e6, film_.scaled.process_time(end_.time_final()),
+               c_.relaxation);
 }
 
 /// Ctrl-C, SIGTERM (a batch system's time limit), or --stop-after-steps (for testing).
 int DryingRun::stop_reason() const {
     if (const int sig = stop_requested()) return sig;
-    if (opt_.stop_after_steps && sim_.step_count() >= *opt_.stop_after_steps) return kStopAfterSteps;
+    if (opt_.stop_after_steps && sim_.step_count() >= *opt_.stop_after_steps)
+        return kStopAfterSteps;
     return 0;
 }
 
 void DryingRun::stop(const StepView& at) const {
     const double tp = film_.scaled.process_time(sim_.time());
-    const std::string resume = fmt::format("the results so far and a checkpoint are written (continue "
-                                           "with drydem run --resume {})", opt_.output_dir.string());
+    const std::string resume =
+        fmt::format("the results so far and a checkpoint are written (continue "
+                    "with drydem run --resume {})",
+                    opt_.output_dir.string());
     if (at.stop == kStopAfterSteps)
-        throw RunError(fmt::format("stopped after step {} (--stop-after-steps) at process time {:.4g} s; {}",
-                                   sim_.step_count(), tp, resume));
+        throw RunError(
+            fmt::format("stopped after step {} (--stop-after-steps) at process time {:.4g} s; {}",
+                        sim_.step_count(), tp, resume));
     if (at.stop != 0)
-        throw RunError(fmt::format("interrupted by signal {} at process time {:.4g} s; {}", at.stop, tp, resume));
-    throw RunError(fmt::format("no final thickness within run.max_process_time = {} s (layer top {:.4g} um, "
-                               "level {:.4g} um)", c_.max_process_time, sim_.stats().layer_top * 1e6,
-                               sim_.liquid_level() * 1e6));
+        throw RunError(fmt::format("interrupted by signal {} at process time {:.4g} s; {}", at.stop,
+                                   tp, resume));
+    throw RunError(
+        fmt::format("no final thickness within run.max_process_time = {} s (layer top {:.4g} um, "
+                    "level {:.4g} um)",
+                    c_.max_process_time, sim_.stats().layer_top * 1e6, sim_.liquid_level() * 1e6));
 }
 
 /// The results (also of a failed run: what it reached), then every output's end. An output that
@@ -210,7 +231,8 @@ void DryingRun::finish(DryingResult& r) {
     r.final_thickness = end_.final_thickness();
     r.process_time_final = film_.scaled.process_time(end_.time_final());
     if (end_.final_found()) {
-        const CoatingDensity d = coating_density(film_.areal_mass, r.final_thickness, film_.recipe.solids_density);
+        const CoatingDensity d =
+            coating_density(film_.areal_mass, r.final_thickness, film_.recipe.solids_density);
         r.density = d.density;
         r.porosity = d.porosity;
     }

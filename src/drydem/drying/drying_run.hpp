@@ -28,13 +28,13 @@ struct RunOptions {
 struct DryingResult {
     bool completed = false;
     std::string error;
-    double final_thickness = 0.0;        ///< H_final at t* [m] (M-8.2)
-    double relaxed_thickness = 0.0;      ///< H_layer at the end of the relaxation window [m]
-    double density = 0.0;                ///< [kg/m^3]
+    double final_thickness = 0.0;   ///< H_final at t* [m] (M-8.2)
+    double relaxed_thickness = 0.0; ///< H_layer at the end of the relaxation window [m]
+    double density = 0.0;           ///< [kg/m^3]
     double porosity = 0.0;
-    double process_time_final = 0.0;     ///< t* [s physical]
+    double process_time_final = 0.0; ///< t* [s physical]
     std::int64_t steps = 0;
-    double wall_time = 0.0;              ///< [s]
+    double wall_time = 0.0; ///< [s]
 };
 
 /// Runs the drying simulation; writes every output into options.output_dir. Throws InputError for

@@ -16,12 +16,13 @@ public:
     /// What one update found (at most one event per step; relaxed may follow in the same step).
     enum class Event : std::uint8_t {
         none,
-        final_reached,        ///< the top rose final_gap above the level
-        final_at_substrate,   ///< the level reached the substrate first; H_final taken there
+        final_reached,      ///< the top rose final_gap above the level
+        final_at_substrate, ///< the level reached the substrate first; H_final taken there
     };
 
     /// final_gap [m]: top - level that marks the final thickness; relaxation [s, simulated].
-    EndCriterion(double final_gap, double relaxation) : final_gap_(final_gap), relaxation_(relaxation) {}
+    EndCriterion(double final_gap, double relaxation)
+        : final_gap_(final_gap), relaxation_(relaxation) {}
 
     /// After each step: simulated time t, liquid level and layer top [m].
     Event update(double t, double level, double top) {

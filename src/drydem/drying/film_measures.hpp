@@ -41,8 +41,8 @@ inline std::size_t particles_cutting_level(const ParticleStore& p, double level)
 struct LevelLoad {
     double push_number = 0.0, inertial_number = 0.0;
 };
-inline LevelLoad level_load(const ParticleStore& p, const ForceField& ff, double level, double level_speed,
-                            double base_area) {
+inline LevelLoad level_load(const ParticleStore& p, const ForceField& ff, double level,
+                            double level_speed, double base_area) {
     double drag = 0.0, push = 0.0, d = 0.0, rho = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double r = p.radius[i], z = p.position[i].z;
@@ -54,7 +54,8 @@ inline LevelLoad level_load(const ParticleStore& p, const ForceField& ff, double
         }
     }
     if (!(push > 0.0) || !(level > 0.0)) return {};
-    return {level_speed * drag / push, (level_speed / level) * d * std::sqrt(rho * base_area / push)};
+    return {level_speed * drag / push,
+            (level_speed / level) * d * std::sqrt(rho * base_area / push)};
 }
 
 /// The particles as the structure analysis sees them (species `cb_species` is CB, the rest NCM).
@@ -62,7 +63,8 @@ inline analysis::Structure as_structure(const ParticleStore& p, const Box& box, 
     analysis::Structure s;
     s.box = box;
     for (std::size_t i = 0; i < p.size(); ++i)
-        s.add(p.position[i], p.radius[i], p.species[i] == cb_species ? analysis::Phase::cb : analysis::Phase::ncm,
+        s.add(p.position[i], p.radius[i],
+              p.species[i] == cb_species ? analysis::Phase::cb : analysis::Phase::ncm,
               p.density[i]);
     return s;
 }

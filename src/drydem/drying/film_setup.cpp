@@ -47,27 +47,31 @@ ParticleStore particles_from_file(const std::filesystem::path& file, const FilmR
 
 Film describe_film(const Config& c) {
     Film f{make_recipe(c), scale_parameters(c), Box{c.box_x, c.box_y}, {}};
-    f.schedule = {f.recipe.wet_film_height, f.scaled.level_speeds_scaled, f.scaled.zone_duration_scaled};
+    f.schedule = {f.recipe.wet_film_height, f.scaled.level_speeds_scaled,
+                  f.scaled.zone_duration_scaled};
     f.areal_mass = f.recipe.realised_dry_mass() / f.recipe.base_area;
     return f;
 }
 
 void count_species(Film& film, const ParticleStore& particles) {
     film.n_ncm = film.n_cb = 0;
-    for (std::uint8_t s : particles.species) (film.recipe.species[s].is_cb ? film.n_cb : film.n_ncm)++;
+    for (std::uint8_t s : particles.species)
+        (film.recipe.species[s].is_cb ? film.n_cb : film.n_ncm)++;
 }
 
 ParticleStore wet_film_particles(const Config& c, const RunOptions& options, const Film& film,
                                  spdlog::logger& log) {
     const FilmRecipe& recipe = film.recipe;
-    if (!options.particles_file) return insert_particles(recipe, film.box, recipe.wet_film_height, c.seed);
+    if (!options.particles_file)
+        return insert_particles(recipe, film.box, recipe.wet_film_height, c.seed);
     ParticleStore p = particles_from_file(*options.particles_file, recipe, film.box);
     double top = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].z + p.radius[i]);
     if (top > recipe.wet_film_height)
         log.warn("--particles: the highest particle top ({:.4g} um) is above the initial liquid "
                  "level H_wet = {:.4g} um of this config (film.areal_loading); the end criterion "
-                 "may fire at once", top * 1e6, recipe.wet_film_height * 1e6);
+                 "may fire at once",
+                 top * 1e6, recipe.wet_film_height * 1e6);
     return p;
 }
 

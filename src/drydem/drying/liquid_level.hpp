@@ -9,9 +9,9 @@
 namespace drydem {
 
 struct LiquidLevelSchedule {
-    double initial_level = 0.0;        ///< H_wet [m]
-    std::vector<double> speeds;        ///< scaled level speed per zone [m/s], > 0 = downward
-    double zone_duration = 0.0;        ///< scaled duration of one zone [s]
+    double initial_level = 0.0; ///< H_wet [m]
+    std::vector<double> speeds; ///< scaled level speed per zone [m/s], > 0 = downward
+    double zone_duration = 0.0; ///< scaled duration of one zone [s]
 
     /// Zone index at simulated time t (the last zone continues).
     [[nodiscard]] int zone(double t) const {

@@ -18,12 +18,14 @@ RunCheckpoint read_run_checkpoint(const std::filesystem::path& output_dir) {
     std::string config_toml = r.str();
     StateFields progress(r, file.string());
     EngineState engine = read_engine_state(r);
-    if (!r.at_end()) throw InputError(fmt::format("{}: unexpected data after the state", file.string()));
+    if (!r.at_end())
+        throw InputError(fmt::format("{}: unexpected data after the state", file.string()));
     return {std::move(config_toml), std::move(progress), std::move(engine)};
 }
 
 void write_run_checkpoint(const std::filesystem::path& output_dir, const std::string& config_toml,
-                          const std::function<void(StateFields&)>& visit_state, const EngineState& engine) {
+                          const std::function<void(StateFields&)>& visit_state,
+                          const EngineState& engine) {
     StateFields progress;
     visit_state(progress);
     BinaryWriter w;

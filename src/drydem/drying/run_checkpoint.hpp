@@ -22,6 +22,7 @@ struct RunCheckpoint {
 
 /// Writes the checkpoint atomically; `visit_state` saves every part's resume state.
 void write_run_checkpoint(const std::filesystem::path& output_dir, const std::string& config_toml,
-                          const std::function<void(StateFields&)>& visit_state, const EngineState& engine);
+                          const std::function<void(StateFields&)>& visit_state,
+                          const EngineState& engine);
 
 } // namespace drydem

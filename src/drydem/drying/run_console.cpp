@@ -46,7 +46,8 @@ private:
 
 std::shared_ptr<spdlog::logger> make_run_logger(const std::filesystem::path& dir, bool quiet,
                                                 bool append, StatusLine& status) {
-    auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "log.txt").string(), !append);
+    auto file =
+        std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "log.txt").string(), !append);
     auto console = std::make_shared<ConsoleSink>(status);
     console->set_level(quiet ? spdlog::level::warn : spdlog::level::info);
     file->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");

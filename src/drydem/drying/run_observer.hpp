@@ -75,8 +75,8 @@ struct StepView {
     const Simulation& sim;
     const EndCriterion& end;
     const StabilityGuard& guard;
-    bool timeout = false;  ///< run.max_process_time reached without an end
-    int stop = 0;          ///< nonzero: the run stops after this step (signal number)
+    bool timeout = false; ///< run.max_process_time reached without an end
+    int stop = 0;         ///< nonzero: the run stops after this step (signal number)
     RunClock::time_point now;
     /// The run goes on after this step.
     [[nodiscard]] bool continues() const { return !end.done() && stop == 0 && !timeout; }
@@ -116,6 +116,7 @@ using StateVisitor = std::function<void(StateFields&)>;
 /// The run's outputs, in the order they are called: diagnostics, time series, frames, dump,
 /// checkpoint, progress line, final particles, structure analysis, summary, plots.
 /// `visit_state` gives the checkpoint every part's resume state.
-std::vector<std::unique_ptr<RunObserver>> make_run_outputs(const RunContext& ctx, StateVisitor visit_state);
+std::vector<std::unique_ptr<RunObserver>> make_run_outputs(const RunContext& ctx,
+                                                           StateVisitor visit_state);
 
 } // namespace drydem

@@ -36,7 +36,8 @@ void truncate_file(const fs::path& file, std::uint64_t size) {
         throw InputError(fmt::format("--resume: {} is missing", file.string()));
     }
     if (fs::file_size(file) < size)
-        throw InputError(fmt::format("--resume: {} is shorter than at the checkpoint", file.string()));
+        throw InputError(
+            fmt::format("--resume: {} is shorter than at the checkpoint", file.string()));
     fs::resize_file(file, size, ec);
     if (ec) throw RunError(fmt::format("cannot truncate {}: {}", file.string(), ec.message()));
 }
@@ -69,7 +70,8 @@ public:
         if (!last_zone_ && int(t / sc.zone_duration_scaled) >= int(sc.level_speeds_scaled.size())) {
             last_zone_ = true;
             ctx_.log.warn("the film is still shrinking after the last dryer zone ({:.4g} s); its "
-                          "rate is kept (model.md C-21)", sc.process_time(t));
+                          "rate is kept (model.md C-21)",
+                          sc.process_time(t));
         }
     }
     void fields(StateFields& f) override {
@@ -86,18 +88,20 @@ private:
 class TimeSeries final : public RunObserver {
 public:
     explicit TimeSeries(const RunContext& ctx)
-        : ctx_(ctx), file_(ctx.options.output_dir / "timeseries.csv"),
-          trigger_{ctx.film.scaled.sim_time(ctx.config.timeseries_every)} {}
+        : ctx_(ctx),
+          file_(ctx.options.output_dir / "timeseries.csv"), trigger_{ctx.film.scaled.sim_time(
+                                                                ctx.config.timeseries_every)} {}
     const char* name() const override { return "time series"; }
     void open(const StepView& s, bool resumed) override {
         if (resumed) truncate_file(file_, bytes_);
-        writer_.emplace(file_,
-                        std::vector<std::string>{"process_time_s", "sim_time_s", "step", "liquid_level_um",
-                                                 "film_thickness_um", "film_top_p99_um", "kinetic_energy_J",
-                                                 "contacts", "wall_contacts", "max_overlap_rel",
-                                                 "particles_at_level", "dt_lambda", "time_step_s", "zone",
-                                                 "push_number", "inertial_number", "overlap_p99_rel"},
-                        resumed);
+        writer_.emplace(
+            file_,
+            std::vector<std::string>{"process_time_s", "sim_time_s", "step", "liquid_level_um",
+                                     "film_thickness_um", "film_top_p99_um", "kinetic_energy_J",
+                                     "contacts", "wall_contacts", "max_overlap_rel",
+                                     "particles_at_level", "dt_lambda", "time_step_s", "zone",
+                                     "push_number", "inertial_number", "overlap_p99_rel"},
+            resumed);
         if (resumed) return;
         row(s);
         trigger_.next = trigger_.every;
@@ -124,34 +128,41 @@ private:
         const int zone = film.schedule.zone(sim.time());
         const LevelLoad load = level_load(sim.particles(), sim.forces(), sim.liquid_level(),
                                           film.schedule.speeds[std::size_t(zone)], film.box.area());
-        const double p99 =
-            analysis::overlap_census(as_structure(sim.particles(), sim.box(), film.recipe.cb_species())).all.p99;
-        const double values[] = {ctx_.film.scaled.process_time(sim.time()),
-                                 sim.time(),
-                                 double(sim.step_count()),
-                                 sim.liquid_level() * 1e6,
-                                 st.layer_top * 1e6,
-                                 top_percentile(sim.particles(), 0.99) * 1e6,
-                                 sim.kinetic_energy(),
-                                 double(st.contacts),
-                                 double(st.wall_contacts),
-                                 st.max_overlap_rel,
-                                 double(particles_cutting_level(sim.particles(), sim.liquid_level())),
-                                 s.guard.indicator(),
-                                 sim.settings().dt,
-                                 double(zone + 1),
-                                 load.push_number,
-                                 load.inertial_number,
-                                 p99};
+        const double p99 = analysis::overlap_census(
+                               as_structure(sim.particles(), sim.box(), film.recipe.cb_species()))
+                               .all.p99;
+        const double values[] = {
+            ctx_.film.scaled.process_time(sim.time()),
+            sim.time(),
+            double(sim.step_count()),
+            sim.liquid_level() * 1e6,
+            st.layer_top * 1e6,
+            top_percentile(sim.particles(), 0.99) * 1e6,
+            sim.kinetic_energy(),
+            double(st.contacts),
+            double(st.wall_contacts),
+            st.max_overlap_rel,
+            double(particles_cutting_level(sim.particles(), sim.liquid_level())),
+            s.guard.indicator(),
+            sim.settings().dt,
+            double(zone + 1),
+            load.push_number,
+            load.inertial_number,
+            p99};
         writer_->row(values);
-        warn_once(warned_overlap_, p99 > overlap_p99_warning,
-                  "the 99th-percentile overlap is {:.1f} % of the smaller radius at process time {:.3f} s "
-                  "(DEM practice ~1 %, warning above {:.0f} %): the contacts are soft for the forces that press "
-                  "them; raise scaling.stiffness_factor or lower the force scaling (docs/validation.md)",
-                  p99 * 100, values[0], overlap_p99_warning * 100);
+        warn_once(
+            warned_overlap_, p99 > overlap_p99_warning,
+            "the 99th-percentile overlap is {:.1f} % of the smaller radius at process time {:.3f} "
+            "s "
+            "(DEM practice ~1 %, warning above {:.0f} %): the contacts are soft for the forces "
+            "that press "
+            "them; raise scaling.stiffness_factor or lower the force scaling (docs/validation.md)",
+            p99 * 100, values[0], overlap_p99_warning * 100);
         warn_once(warned_push_, load.push_number > push_number_warning,
-                  "the push number is {:.3g} at process time {:.3f} s (warning above {:g}): the level cannot carry "
-                  "the film, which then jams where the time scaling puts it; scaling.scheme = \"force_ratio\" "
+                  "the push number is {:.3g} at process time {:.3f} s (warning above {:g}): the "
+                  "level cannot carry "
+                  "the film, which then jams where the time scaling puts it; scaling.scheme = "
+                  "\"force_ratio\" "
                   "keeps the process's value (docs/validation.md)",
                   load.push_number, values[0], push_number_warning);
     }
@@ -263,7 +274,8 @@ public:
 private:
     void frame(const Simulation& sim) override {
         if (!os_.is_open()) os_.open(file_, std::ios::trunc); // a run that failed before open()
-        append_lammps_dump(os_, sim.particles(), ctx_.film.box, sim.step_count(), sim.stats().layer_top);
+        append_lammps_dump(os_, sim.particles(), ctx_.film.box, sim.step_count(),
+                           sim.stats().layer_top);
         os_.flush();
     }
 
@@ -297,9 +309,11 @@ public:
             write(s.sim);
         }
     }
+
 private:
     void write(const Simulation& sim) {
-        write_run_checkpoint(ctx_.options.output_dir, to_toml(ctx_.config), visit_state_, sim.state());
+        write_run_checkpoint(ctx_.options.output_dir, to_toml(ctx_.config), visit_state_,
+                             sim.state());
         ctx_.log.debug("checkpoint at step {} (process time {:.4f} s)", sim.step_count(),
                        ctx_.film.scaled.process_time(sim.time()));
     }
@@ -321,7 +335,8 @@ public:
     }
     void after_step(const StepView& s) override {
         if (!s.continues()) return;
-        if (std::chrono::duration<double>(s.now - last_).count() < ctx_.config.progress_every) return;
+        if (std::chrono::duration<double>(s.now - last_).count() < ctx_.config.progress_every)
+            return;
         last_ = s.now;
         const Simulation& sim = s.sim;
         const double t = sim.time();
@@ -350,7 +365,8 @@ private:
     [[nodiscard]] double remaining(const StepView& s) const {
         const double t = s.sim.time(), top = s.sim.stats().layer_top;
         if (s.end.final_found()) return s.end.time_end() - t;
-        const double expected_top = std::min(top, std::max(ctx_.film.areal_mass / uncalendered_density, 0.5 * top));
+        const double expected_top =
+            std::min(top, std::max(ctx_.film.areal_mass / uncalendered_density, 0.5 * top));
         const double level_end = std::max(0.0, expected_top - s.end.final_gap());
         return std::max(0.0, ctx_.film.schedule.time_at_level(level_end) - t) + s.end.relaxation();
     }
@@ -363,7 +379,8 @@ private:
 
 } // namespace
 
-std::vector<std::unique_ptr<RunObserver>> make_run_outputs(const RunContext& ctx, StateVisitor visit_state) {
+std::vector<std::unique_ptr<RunObserver>> make_run_outputs(const RunContext& ctx,
+                                                           StateVisitor visit_state) {
     std::vector<std::unique_ptr<RunObserver>> list;
     list.push_back(std::make_unique<Diagnostics>(ctx));
     list.push_back(std::make_unique<TimeSeries>(ctx));

@@ -10,11 +10,13 @@ namespace {
 std::string this_build() { return fmt::format("DryDEM {} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH); }
 } // namespace
 
-StateFields::StateFields(BinaryReader& r, std::string source) : loading_(true), source_(std::move(source)) {
+StateFields::StateFields(BinaryReader& r, std::string source)
+    : loading_(true), source_(std::move(source)) {
     const auto format = r.pod<std::uint32_t>();
     written_by_ = r.str();
     if (format != kFormat)
-        mismatch(fmt::format("its run progress has format {}, this build reads format {}", format, kFormat));
+        mismatch(fmt::format("its run progress has format {}, this build reads format {}", format,
+                             kFormat));
     const auto n = r.pod<std::uint64_t>();
     for (std::uint64_t i = 0; i < n; ++i) {
         std::string name = r.str();
@@ -42,15 +44,16 @@ const std::vector<unsigned char>& StateFields::find(std::string_view name, std::
     const auto it = fields_.find(name);
     if (it == fields_.end()) mismatch(fmt::format("it has no run progress field '{}'", name));
     if (it->second.size() != size)
-        mismatch(fmt::format("its run progress field '{}' has {} bytes, this build expects {}", name,
-                             it->second.size(), size));
+        mismatch(fmt::format("its run progress field '{}' has {} bytes, this build expects {}",
+                             name, it->second.size(), size));
     loaded_.emplace(name);
     return it->second;
 }
 
 void StateFields::check_all_loaded() const {
     for (const auto& [name, bytes] : fields_)
-        if (!loaded_.contains(name)) mismatch(fmt::format("its run progress field '{}' is unknown to this build", name));
+        if (!loaded_.contains(name))
+            mismatch(fmt::format("its run progress field '{}' is unknown to this build", name));
 }
 
 void StateFields::mismatch(const std::string& what) const {

@@ -60,7 +60,8 @@ private:
         ao.dump = (dir / "snapshots" / "dump.lammpstrj").string();
         ao.dump_defaults = file_defaults(c);
         ao.log = [this](const std::string& m) { ctx_.log.info("analysis: {}", m); };
-        const analysis::Structure st = analysis::structure_from_file(read_particles(dir / "final.csv"), file_defaults(c));
+        const analysis::Structure st =
+            analysis::structure_from_file(read_particles(dir / "final.csv"), file_defaults(c));
         const analysis::AnalysisResult ar = analysis::analyze_structure(st, ao);
         write_analysis(dir / "analysis", ar, ao, "final.csv");
         json add;
@@ -118,17 +119,19 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
     for (double r : c.shrinkage_rates) um.push_back(r * 1e6);
     s["shrinkage_rates_um_s"] = um;
     s["shrinkage_rates_source"] =
-        c.dryer_schedule == "model"
-            ? fmt::format("dryer model (preset {}, final porosity {:.4g})", c.dryer_preset, c.dryer_final_porosity)
-            : std::string("dryer.shrinkage_rates");
+        c.dryer_schedule == "model" ? fmt::format("dryer model (preset {}, final porosity {:.4g})",
+                                                  c.dryer_preset, c.dryer_final_porosity)
+                                    : std::string("dryer.shrinkage_rates");
     s["integrator"] = c.integrator;
     s["time_step_s"] = c.time_step_cap();
     s["time_step_min_s"] = e.guard.min_time_step();
     const std::int64_t steps = e.result.steps;
     s["time_step_mean_s"] = steps > 0 ? sim.time() / double(steps) : 0.0;
     const PhaseTimes& pt = sim.phase_times();
-    s["wall_time_phases_s"] = {{"pair", pt.pair}, {"neighbor", pt.neighbor},
-                               {"integrate", pt.integrate}, {"guard", e.guard.wall_time()}};
+    s["wall_time_phases_s"] = {{"pair", pt.pair},
+                               {"neighbor", pt.neighbor},
+                               {"integrate", pt.integrate},
+                               {"guard", e.guard.wall_time()}};
     s["neighbor_builds"] = sim.neighbors().builds();
     s["steps"] = steps;
     s["seed"] = c.seed;
@@ -136,7 +139,8 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
     s["threads"] = sim.threads();
     s["version"] = fmt::format("{} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH);
     s["wall_time_s"] = e.result.wall_time;
-    s["particle_steps_per_s"] = double(sim.particles().size()) * double(steps) / std::max(e.result.wall_time, 1e-9);
+    s["particle_steps_per_s"] =
+        double(sim.particles().size()) * double(steps) / std::max(e.result.wall_time, 1e-9);
     s["config"] = "config.toml";
 }
 
@@ -150,13 +154,15 @@ public:
         add_results(ctx_, e, e.summary);
         add_method(ctx_, e, e.summary);
         const fs::path dir = ctx_.options.output_dir;
-        write_file_atomically(dir / "summary.json", [&](std::ostream& o) { o << e.summary.dump(2) << "\n"; });
+        write_file_atomically(dir / "summary.json",
+                              [&](std::ostream& o) { o << e.summary.dump(2) << "\n"; });
         const DryingResult& r = e.result;
         if (r.completed)
-            ctx_.log.info("done: final thickness {:.3f} um, density {:.4f} g/cm3, porosity {:.4f}; {} "
-                          "steps in {:.1f} s ({:.3g} particle-steps/s); results in {}",
-                          r.final_thickness * 1e6, r.density * 1e-3, r.porosity, r.steps, r.wall_time,
-                          e.summary["particle_steps_per_s"].get<double>(), dir.string());
+            ctx_.log.info(
+                "done: final thickness {:.3f} um, density {:.4f} g/cm3, porosity {:.4f}; {} "
+                "steps in {:.1f} s ({:.3g} particle-steps/s); results in {}",
+                r.final_thickness * 1e6, r.density * 1e-3, r.porosity, r.steps, r.wall_time,
+                e.summary["particle_steps_per_s"].get<double>(), dir.string());
     }
 
 private:
@@ -176,13 +182,13 @@ public:
         if (run_python_script("plot_run.py", {dir.string()}, log) == ScriptRun::failed)
             ctx_.log.warn("plotting failed (see log.txt)");
         if (e.summary.contains("analysis") &&
-            run_python_script("plot_analysis.py", {(dir / "analysis").string(), (dir / "plots").string()}, log) ==
-                ScriptRun::failed)
+            run_python_script("plot_analysis.py",
+                              {(dir / "analysis").string(), (dir / "plots").string()},
+                              log) == ScriptRun::failed)
             ctx_.log.warn("plotting the analysis failed (see log.txt)");
     }
 
 private:
-
     const RunContext& ctx_;
 };
 

@@ -19,16 +19,21 @@ ScaledParameters scale_parameters(const Config& c) {
     s.time_factor = k;
     s.viscosity_reduction = b;
     // force_ratio: every conservative force × k/b, as the viscous ones at velocities × k and η / b.
-    s.capillary_factor = force_ratio ? k / b : c.capillary_factor > 0.0 ? c.capillary_factor : paper_capillary_factor;
+    s.capillary_factor = force_ratio                ? k / b
+                         : c.capillary_factor > 0.0 ? c.capillary_factor
+                                                    : paper_capillary_factor;
     s.hamaker_factor = force_ratio ? k / b : c.hamaker_factor > 0.0 ? c.hamaker_factor : k;
     s.stiffness_factor = c.stiffness_factor;
     s.gravity_physical = c.gravity;
-    s.gravity_scaled = c.gravity * k / b;              // Eq. 13 keeps v_level / v_settling
+    s.gravity_scaled = c.gravity * k / b; // Eq. 13 keeps v_level / v_settling
     s.drag_viscosity_physical = c.viscosity;
-    s.drag_viscosity_scaled = c.viscosity / b;         // Eq. 10 with η/b
+    s.drag_viscosity_scaled = c.viscosity / b; // Eq. 10 with η/b
     s.lubrication_viscosity =
         force_ratio || c.lubrication_uses_reduced_viscosity ? c.viscosity / b : c.viscosity; // C-17
-    const auto scaled = [](double (&v)[2], double physical, double factor) { v[0] = physical; v[1] = physical * factor; };
+    const auto scaled = [](double(&v)[2], double physical, double factor) {
+        v[0] = physical;
+        v[1] = physical * factor;
+    };
     scaled(s.hamaker_cb_cb, c.hamaker_cb_cb, s.hamaker_factor);
     scaled(s.hamaker_ncm_cb, c.hamaker_ncm_cb, s.hamaker_factor);
     scaled(s.hamaker_ncm_ncm, c.hamaker_ncm_ncm, s.hamaker_factor);
@@ -63,7 +68,9 @@ Config simulated_config(const Config& c, const ScaledParameters& s) {
 
 nlohmann::json to_json(const ScaledParameters& s) {
     using nlohmann::json;
-    auto pair = [](double physical, double scaled) { return json{{"physical", physical}, {"scaled", scaled}}; };
+    auto pair = [](double physical, double scaled) {
+        return json{{"physical", physical}, {"scaled", scaled}};
+    };
     return json{
         {"scheme", s.scheme},
         {"time_factor_k", s.time_factor},
@@ -81,7 +88,8 @@ nlohmann::json to_json(const ScaledParameters& s) {
         {"youngs_modulus_ncm_Pa", pair(s.youngs_ncm[0], s.youngs_ncm[1])},
         {"youngs_modulus_cb_Pa", pair(s.youngs_cb[0], s.youngs_cb[1])},
         {"youngs_modulus_substrate_Pa", pair(s.youngs_substrate[0], s.youngs_substrate[1])},
-        {"shrinkage_rates_m_s", {{"physical", s.shrinkage_rates_physical}, {"level_speed_scaled", s.level_speeds_scaled}}},
+        {"shrinkage_rates_m_s",
+         {{"physical", s.shrinkage_rates_physical}, {"level_speed_scaled", s.level_speeds_scaled}}},
         {"zone_duration_s", pair(s.zone_duration_physical, s.zone_duration_scaled)},
     };
 }
@@ -96,12 +104,14 @@ ForceField make_drying_force_field(const Config& config, const FilmRecipe& recip
     // Each law maps its own keys (its from_config, beside the law).
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j)
-            ff.pair[std::size_t(i) * n + j] = PairLaws::from_config(c, recipe.species[i], recipe.species[j]);
+            ff.pair[std::size_t(i) * n + j] =
+                PairLaws::from_config(c, recipe.species[i], recipe.species[j]);
     ff.substrate_on = true;
     for (int i = 0; i < n; ++i)
-        ff.substrate.push_back(mix_hertz_mindlin(HertzMindlinLaw::youngs_modulus(c, recipe.species[i]), c.poisson_ratio,
-                                                 c.substrate_youngs_modulus, c.substrate_poisson_ratio,
-                                                 c.restitution, c.substrate_friction, c.rolling_friction));
+        ff.substrate.push_back(mix_hertz_mindlin(
+            HertzMindlinLaw::youngs_modulus(c, recipe.species[i]), c.poisson_ratio,
+            c.substrate_youngs_modulus, c.substrate_poisson_ratio, c.restitution,
+            c.substrate_friction, c.rolling_friction));
     ff.substrate_lubrication.viscosity = c.substrate_lubrication ? s.lubrication_viscosity : 0.0;
     ff.substrate_lubrication.kappa_c = c.kappa_c;
     ff.drag.viscosity = s.drag_viscosity_scaled;
@@ -117,8 +127,10 @@ PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe) {
     PairReach widest;
     for (int i = 0; i < ff.species_count; ++i)
         for (int j = 0; j < ff.species_count; ++j) {
-            const double d_i = recipe.species[std::size_t(i)].diameter, d_j = recipe.species[std::size_t(j)].diameter;
-            const double reach = 0.5 * (d_i + d_j) + interaction_range(ff.pair_params(i, j), 0.5 * d_i, 0.5 * d_j);
+            const double d_i = recipe.species[std::size_t(i)].diameter,
+                         d_j = recipe.species[std::size_t(j)].diameter;
+            const double reach =
+                0.5 * (d_i + d_j) + interaction_range(ff.pair_params(i, j), 0.5 * d_i, 0.5 * d_j);
             if (reach > widest.reach) widest = {reach, d_i, d_j};
         }
     return widest;

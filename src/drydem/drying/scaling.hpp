@@ -21,17 +21,17 @@
 namespace drydem {
 
 struct ScaledParameters {
-    std::string scheme;                                      ///< "paper" or "force_ratio"
+    std::string scheme; ///< "paper" or "force_ratio"
     double time_factor, viscosity_reduction, capillary_factor, hamaker_factor, stiffness_factor;
-    double gravity_physical, gravity_scaled;                 ///< [m/s^2]
-    double drag_viscosity_physical, drag_viscosity_scaled;   ///< [Pa s]
-    double lubrication_viscosity;                            ///< [Pa s], as simulated
+    double gravity_physical, gravity_scaled;                        ///< [m/s^2]
+    double drag_viscosity_physical, drag_viscosity_scaled;          ///< [Pa s]
+    double lubrication_viscosity;                                   ///< [Pa s], as simulated
     double hamaker_cb_cb[2], hamaker_ncm_cb[2], hamaker_ncm_ncm[2]; ///< {physical, scaled} [J]
-    double surface_tension_physical, surface_tension_scaled; ///< σ and σ·s_cap [N/m]
-    double youngs_ncm[2], youngs_cb[2], youngs_substrate[2]; ///< {physical, scaled} [Pa]
-    std::vector<double> shrinkage_rates_physical;            ///< [m/s]
-    std::vector<double> level_speeds_scaled;                 ///< [m/s]
-    double zone_duration_physical, zone_duration_scaled;     ///< [s]
+    double surface_tension_physical, surface_tension_scaled;        ///< σ and σ·s_cap [N/m]
+    double youngs_ncm[2], youngs_cb[2], youngs_substrate[2];        ///< {physical, scaled} [Pa]
+    std::vector<double> shrinkage_rates_physical;                   ///< [m/s]
+    std::vector<double> level_speeds_scaled;                        ///< [m/s]
+    double zone_duration_physical, zone_duration_scaled;            ///< [s]
 
     /// Simulated time ↔ process (physical) time.
     [[nodiscard]] double process_time(double sim_time) const { return sim_time * time_factor; }

@@ -13,7 +13,8 @@ GuardPolicy guard_policy_of(const std::string& name) {
     if (name == "adapt") return GuardPolicy::adapt;
     if (name == "refuse") return GuardPolicy::refuse;
     if (name == "warn") return GuardPolicy::warn;
-    throw InputError(fmt::format("numerics.stability_guard = \"{}\": allowed \"adapt\", \"refuse\", \"warn\"", name));
+    throw InputError(fmt::format(
+        "numerics.stability_guard = \"{}\": allowed \"adapt\", \"refuse\", \"warn\"", name));
 }
 
 GuardDecision guard_decision(GuardPolicy policy, double dt, double cap,
@@ -53,10 +54,11 @@ std::string StabilityGuard::check(Simulation& sim) {
     indicator_ = d.indicator;
     if (policy_ == GuardPolicy::adapt) {
         if (d.time_step != dt)
-            log_.debug("step {}: dt {:.3g} -> {:.3g} s (damping {:.3g} /s, stiffness {:.3g} rad/s, at "
-                       "particle {}; {} power iterations)",
-                       sim.step_count(), dt, d.time_step, e.damping_rate, e.stiffness_rate,
-                       e.particle_id, e.iterations);
+            log_.debug(
+                "step {}: dt {:.3g} -> {:.3g} s (damping {:.3g} /s, stiffness {:.3g} rad/s, at "
+                "particle {}; {} power iterations)",
+                sim.step_count(), dt, d.time_step, e.damping_rate, e.stiffness_rate, e.particle_id,
+                e.iterations);
         sim.set_time_step(d.time_step);
         dt_min_ = std::min(dt_min_, d.time_step);
         return {};
@@ -71,8 +73,9 @@ std::string StabilityGuard::check(Simulation& sim) {
         log_.warn("{}", msg);
     } else if (d.action == GuardDecision::Action::warn_close) {
         warned_ = d.indicator; // warn again only when it keeps rising
-        log_.warn("time step {:.3g} s is close to the stability bound: dt*lambda = {:.3g} at particle {}",
-                  dt, d.indicator, e.particle_id);
+        log_.warn(
+            "time step {:.3g} s is close to the stability bound: dt*lambda = {:.3g} at particle {}",
+            dt, d.indicator, e.particle_id);
     }
     return {};
 }

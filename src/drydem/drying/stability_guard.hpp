@@ -29,8 +29,8 @@ inline constexpr double kGuardWarnRise = 0.05;
 
 struct GuardDecision {
     enum class Action : std::uint8_t { none, warn_close, beyond_bound };
-    double time_step;      ///< Δt for the next steps [s]
-    double indicator;      ///< Δt λ at that step (stable < 2)
+    double time_step; ///< Δt for the next steps [s]
+    double indicator; ///< Δt λ at that step (stable < 2)
     Action action = Action::none;
 };
 

@@ -9,7 +9,6 @@
 
 namespace drydem {
 
-
 Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(particles)), box_(box), ff_(std::move(forces)), settings_(settings),
       nl_(settings.skin, settings.threads), liquid_level_(settings.initial_liquid_level) {
@@ -25,8 +24,8 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
 
 Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(state.particles)), box_(box), ff_(std::move(forces)), settings_(settings),
-      nl_(settings.skin, settings.threads), step_(state.step), time_(state.time), liquid_level_(state.liquid_level),
-      force_rebuild_(state.force_rebuild), stats_(state.stats),
+      nl_(settings.skin, settings.threads), step_(state.step), time_(state.time),
+      liquid_level_(state.liquid_level), force_rebuild_(state.force_rebuild), stats_(state.stats),
       rebuilds_since_sort_(state.rebuilds_since_sort) {
     settings_.dt = state.dt;
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
@@ -79,13 +78,14 @@ std::vector<std::int32_t> Simulation::coordination() const {
 }
 
 EngineState Simulation::state() const {
-    return {p_, nl_.state(), step_, time_, liquid_level_, settings_.dt, stats_, accel_, alpha_,
-            force_rebuild_, rebuilds_since_sort_};
+    return {p_,     nl_.state(), step_,  time_,          liquid_level_,       settings_.dt,
+            stats_, accel_,      alpha_, force_rebuild_, rebuilds_since_sort_};
 }
 
 void Simulation::rebuild_neighbors() {
-    const bool sort = settings_.sort_every > 0 &&
-                      (nl_.builds() == 0 || ++rebuilds_since_sort_ >= std::uint64_t(settings_.sort_every));
+    const bool sort =
+        settings_.sort_every > 0 &&
+        (nl_.builds() == 0 || ++rebuilds_since_sort_ >= std::uint64_t(settings_.sort_every));
     if (sort) rebuilds_since_sort_ = 0;
     // Upper bound of the range an owner can have: partners are never larger than the owner.
     auto owner_range = [&](std::size_t i) {
@@ -110,7 +110,8 @@ void Simulation::rebuild_neighbors() {
         std::vector<std::uint32_t> old_index(std::size_t(max_id) + 1);
         for (std::size_t k = 0; k < ids.size(); ++k) old_index[ids[k]] = std::uint32_t(k);
         std::vector<BodyResistance> moved(p_.size());
-        for (std::size_t k = 0; k < p_.size(); ++k) moved[k] = body_resistance_[old_index[p_.id[k]]];
+        for (std::size_t k = 0; k < p_.size(); ++k)
+            moved[k] = body_resistance_[old_index[p_.id[k]]];
         body_resistance_.swap(moved);
     } else {
         nl_.build(p_, box_, range, owner_range, sort);
@@ -146,8 +147,10 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     const double t0 = omp_get_wtime();
     std::size_t contacts = 0;
     double max_overlap = wall_overlap;
-    if (semi_implicit()) pair_loop<true>(contacts, max_overlap);
-    else pair_loop<false>(contacts, max_overlap);
+    if (semi_implicit())
+        pair_loop<true>(contacts, max_overlap);
+    else
+        pair_loop<false>(contacts, max_overlap);
     stats_.contacts = contacts;
     stats_.wall_contacts = wall_contacts;
     stats_.max_overlap_rel = max_overlap;
@@ -162,8 +165,9 @@ namespace {
 // pair loop (2cd0e8a): no prefetch was left in the binary and the pair loop of a dense 20.1
 // mg/cm2 film took 18 % longer (docs/performance.md, "Cost of the pair-law contract").
 template <bool SelfBlocks>
-[[gnu::always_inline]] inline void prefetch_partners(const NeighborList& nl, const ParticleStore& p, const SelfBlock* block,
-                              std::uint32_t s, std::uint32_t row_end) {
+[[gnu::always_inline]] inline void prefetch_partners(const NeighborList& nl, const ParticleStore& p,
+                                                     const SelfBlock* block, std::uint32_t s,
+                                                     std::uint32_t row_end) {
     if (s + 2 < row_end) {
         const std::uint32_t jf = nl.partner(s + 2);
         __builtin_prefetch(&p.position[jf]);
@@ -196,8 +200,10 @@ std::size_t Simulation::row_split(std::size_t t, std::size_t parts) const {
     std::size_t a = 0, b = n; // first row whose cumulative cost reaches the target
     while (a < b) {
         const std::size_t m = (a + b) / 2;
-        if (double(nl_.begin(m)) + double(m) < target) a = m + 1;
-        else b = m;
+        if (double(nl_.begin(m)) + double(m) < target)
+            a = m + 1;
+        else
+            b = m;
     }
     return a;
 }
@@ -233,7 +239,6 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
     const std::size_t species_count = std::size_t(ff_.species_count);
     const PairParams* pair_table = ff_.pair.data();
     const std::size_t threads = std::size_t(threads_);
-
 
     // Pair loop over the half list. Thread t owns the rows [lo, hi) and writes the forces,
     // torques and self-blocks of its own particles straight into the store (which holds the
@@ -350,9 +355,9 @@ void Simulation::step() {
     std::size_t wall_contacts = 0;
     // Step 3 (level part): the liquid level at the new time, needed by the particle forces.
     if (level_at_) liquid_level_ = level_at_(time_ + dt);
-    // M-9.1 steps 1-2: half kick, drift, wrap; track the largest displacement since the build.
-    // The particle forces (substrate, drag, weight, capillary) need only this particle's new
-    // state, so they are computed in the same pass (step 4, first half).
+        // M-9.1 steps 1-2: half kick, drift, wrap; track the largest displacement since the build.
+        // The particle forces (substrate, drag, weight, capillary) need only this particle's new
+        // state, so they are computed in the same pass (step 4, first half).
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_disp2, wall_overlap) reduction(+ : wall_contacts)
     for (std::size_t i = 0; i < n; ++i) {
         if (semi) {
@@ -433,7 +438,8 @@ void Simulation::check_health() {
             const std::uint32_t j = nl_.partner(s);
             const Vec3 d = box_.minimum_image(p.position[i], p.position[j]);
             const double dist = norm(d);
-            const double rel = -(dist - p.radius[i] - p.radius[j]) / std::min(p.radius[i], p.radius[j]);
+            const double rel =
+                -(dist - p.radius[i] - p.radius[j]) / std::min(p.radius[i], p.radius[j]);
             if (rel > worst) {
                 worst = rel;
                 closing = dot(p.velocity[i] - p.velocity[j], d) / dist; // normal relative speed
@@ -443,10 +449,11 @@ void Simulation::check_health() {
             }
         }
     }
-    throw RunError(fmt::format("runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller "
-                               "radius (limit {:.3g}). {}",
-                               step_, time_, what, worst, settings_.overlap_limit,
-                               overlap_cause(closing * settings_.dt / r_min)));
+    throw RunError(fmt::format(
+        "runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller "
+        "radius (limit {:.3g}). {}",
+        step_, time_, what, worst, settings_.overlap_limit,
+        overlap_cause(closing * settings_.dt / r_min)));
 }
 
 std::string Simulation::overlap_cause(double closing_per_step) {
@@ -454,26 +461,31 @@ std::string Simulation::overlap_cause(double closing_per_step) {
     // pair pressed by a steady load creeps, its overlap growing over thousands of steps (docs/
     // model.md C-9, departure 4; a 40 um film at friction 0.3 crept 0.005 % per step). The
     // boundary, 0.1 % of the smaller radius per step, lies far from both.
-    const double per_step = 100.0 * std::abs(closing_per_step); // % of the smaller radius, either way
+    const double per_step =
+        100.0 * std::abs(closing_per_step); // % of the smaller radius, either way
     if (per_step < 0.1)
-        return fmt::format(
-            "The pair moves by only {:.2g} % of the smaller radius per step: a steady load presses it, "
-            "not an instability. The scaled capillary and van der Waals forces (scaling.capillary_factor, "
-            "scaling.hamaker_factor) exceed what the contact stiffness holds at this overlap (docs/model.md "
-            "C-9); raise numerics.overlap_limit (up to 2) to let the run finish, or stiffen the contact "
-            "(materials.cb_youngs_modulus)",
-            per_step);
-    return fmt::format("The pair moves by {:.2g} % of the smaller radius per step: the contact could not stop "
-                       "it. Likely causes: a time step too large for the stiffest force (see `drydem check`), "
-                       "or attractive or capillary forces too strong for the contact stiffness",
-                       per_step);
+        return fmt::format("The pair moves by only {:.2g} % of the smaller radius per step: a "
+                           "steady load presses it, "
+                           "not an instability. The scaled capillary and van der Waals forces "
+                           "(scaling.capillary_factor, "
+                           "scaling.hamaker_factor) exceed what the contact stiffness holds at "
+                           "this overlap (docs/model.md "
+                           "C-9); raise numerics.overlap_limit (up to 2) to let the run finish, or "
+                           "stiffen the contact "
+                           "(materials.cb_youngs_modulus)",
+                           per_step);
+    return fmt::format(
+        "The pair moves by {:.2g} % of the smaller radius per step: the contact could not stop "
+        "it. Likely causes: a time step too large for the stiffest force (see `drydem check`), "
+        "or attractive or capillary forces too strong for the contact stiffness",
+        per_step);
 }
 
 double Simulation::kinetic_energy() const {
     double e = 0.0;
     for (std::size_t i = 0; i < p_.size(); ++i)
-        e += 0.5 * p_.mass[i] * norm2(p_.velocity[i]) +
-             0.5 / p_.inv_inertia[i] * norm2(p_.omega[i]);
+        e +=
+            0.5 * p_.mass[i] * norm2(p_.velocity[i]) + 0.5 / p_.inv_inertia[i] * norm2(p_.omega[i]);
     return e;
 }
 
@@ -485,6 +497,4 @@ Vec3 Simulation::momentum() const {
 
 } // namespace drydem
 
-namespace drydem {
-
-} // namespace drydem
+namespace drydem {} // namespace drydem

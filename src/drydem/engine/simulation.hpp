@@ -16,15 +16,16 @@ namespace drydem {
 /// Time integration (docs/model.md "Resistance and time integration").
 enum class Integrator {
     explicit_verlet, ///< velocity Verlet, every force explicit (the reference; Δt < 2/λ_max of M⁻¹R)
-    semi_implicit,   ///< v += Δt (M_i + Δt D_i)⁻¹ F_i: the dissipative forces do not limit Δt
+    semi_implicit, ///< v += Δt (M_i + Δt D_i)⁻¹ F_i: the dissipative forces do not limit Δt
 };
 
 struct EngineSettings {
-    double dt = 1.0e-11;         ///< time step [s] (C-23)
-    double skin = 0.1e-6;        ///< neighbor skin [m] (M-9.4)
-    int threads = 0;             ///< OpenMP threads; 0 = runtime default
-    int sort_every = 10;         ///< spatial re-sort every this many rebuilds (0 = never)
-    double overlap_limit = 1.0;  ///< stop when an overlap exceeds this fraction of the smaller radius
+    double dt = 1.0e-11;  ///< time step [s] (C-23)
+    double skin = 0.1e-6; ///< neighbor skin [m] (M-9.4)
+    int threads = 0;      ///< OpenMP threads; 0 = runtime default
+    int sort_every = 10;  ///< spatial re-sort every this many rebuilds (0 = never)
+    double overlap_limit =
+        1.0; ///< stop when an overlap exceeds this fraction of the smaller radius
     double initial_liquid_level = 1.0e30; ///< z_L at t = 0 [m] (far above: no capillary force)
     Integrator integrator = Integrator::explicit_verlet;
 };
@@ -38,10 +39,10 @@ struct PhaseTimes {
 
 /// Per-step diagnostics of the last force evaluation and kick.
 struct StepStats {
-    std::size_t contacts = 0;        ///< particle-particle contacts (δ > 0)
-    std::size_t wall_contacts = 0;   ///< particle-substrate contacts
-    double max_overlap_rel = 0.0;    ///< max δ / min(r_i, r_j) over all contacts
-    double layer_top = 0.0;          ///< max_i (z_i + r_i) [m] (M-8.2)
+    std::size_t contacts = 0;      ///< particle-particle contacts (δ > 0)
+    std::size_t wall_contacts = 0; ///< particle-substrate contacts
+    double max_overlap_rel = 0.0;  ///< max δ / min(r_i, r_j) over all contacts
+    double layer_top = 0.0;        ///< max_i (z_i + r_i) [m] (M-8.2)
 };
 
 /// The complete dynamic state of a simulation, for checkpoints: restoring it continues the run
@@ -49,12 +50,12 @@ struct StepStats {
 /// part of it: velocity Verlet's first half kick uses the forces of the previous evaluation, which
 /// saw the half-step velocities, so they cannot be recomputed from the full-step state.
 struct EngineState {
-    ParticleStore particles;          ///< in storage order
+    ParticleStore particles; ///< in storage order
     NeighborList::State neighbors;
     std::int64_t step = 0;
-    double time = 0.0;                ///< simulated time [s]
-    double liquid_level = 0.0;        ///< [m]
-    double dt = 0.0;                  ///< current Δt (the stability guard may have lowered it)
+    double time = 0.0;         ///< simulated time [s]
+    double liquid_level = 0.0; ///< [m]
+    double dt = 0.0;           ///< current Δt (the stability guard may have lowered it)
     StepStats stats;
     /// Semi-implicit only: (M_i + Δt D_i)⁻¹ [F_i; T_i] of the last evaluation, which the next
     /// step's first half kick uses (empty for the explicit integrator).
@@ -84,7 +85,9 @@ public:
 
     /// The liquid level z_L(t) [m] as a function of simulated time; evaluated once per step after
     /// the drift (M-9.1 step 3). Without it the level stays where set_liquid_level put it.
-    void set_liquid_level_schedule(std::function<double(double)> level) { level_at_ = std::move(level); }
+    void set_liquid_level_schedule(std::function<double(double)> level) {
+        level_at_ = std::move(level);
+    }
     void set_liquid_level(double z) { liquid_level_ = z; }
     [[nodiscard]] double liquid_level() const { return liquid_level_; }
 
@@ -118,10 +121,10 @@ public:
     /// stiffness_rate: sqrt(λ_max) of M_eff⁻¹K (K: contact springs, van der Waals, capillary
     /// spring; M_eff = M, or M + Δt D for the semi-implicit kick), stable for Δt ω < 2.
     struct StabilityEstimate {
-        double damping_rate = 0.0;    ///< [1/s]
-        double stiffness_rate = 0.0;  ///< [rad/s]
+        double damping_rate = 0.0;     ///< [1/s]
+        double stiffness_rate = 0.0;   ///< [rad/s]
         std::uint32_t particle_id = 0; ///< where the limiting mode is largest
-        int iterations = 0;           ///< power iterations spent
+        int iterations = 0;            ///< power iterations spent
     };
     [[nodiscard]] StabilityEstimate stability_estimate() const;
 
@@ -177,9 +180,9 @@ private:
     // only with more than one thread.
     struct ThreadBuffer {
         std::vector<Vec3> force, torque;
-        std::vector<SelfBlock> block;        ///< semi-implicit only
-        std::vector<std::uint8_t> marked;    ///< 1 while the particle is in `touched`
-        std::vector<std::uint32_t> touched;  ///< particles written this step (capacity n)
+        std::vector<SelfBlock> block;       ///< semi-implicit only
+        std::vector<std::uint8_t> marked;   ///< 1 while the particle is in `touched`
+        std::vector<std::uint32_t> touched; ///< particles written this step (capacity n)
     };
     std::vector<ThreadBuffer> buffer_;
 };

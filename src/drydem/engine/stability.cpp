@@ -109,69 +109,72 @@ GuardOperators assemble_operators(const GuardInputs& in) {
     std::vector<std::vector<SelfBlock>> share(semi ? threads : 0, std::vector<SelfBlock>(n));
 #pragma omp parallel num_threads(int(threads))
     {
-    const std::size_t t = std::size_t(omp_get_thread_num());
-    Operator& damping_t = op.damping[t];
-    Operator& stiffness_t = op.stiffness[t];
-    std::vector<SelfBlock>* blocks_t = semi ? &share[t] : nullptr;
-    for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) {
-        const double r = p.radius[i], z = p.position[i].z;
-        const int si = p.species[i];
-        // Body laws. Dissipative: drag, substrate lubrication and contact damping.
-        BodyResistance fluid = stokes_drag_resistance(r, in.ff.drag);
-        BodyResistance fluid_now = fluid;
-        BodyResistance spring;
-        if (in.ff.substrate_on) {
-            fluid += substrate_lubrication_resistance(z - skin, r, in.ff.substrate_lubrication);
-            fluid_now += substrate_lubrication_resistance(z, r, in.ff.substrate_lubrication);
-            const double overlap = r - (z - skin);
-            if (overlap > 0.0) {
-                const HertzMindlinCoefficients co =
-                    hertz_mindlin_coefficients(r, overlap, p.mass[i], in.ff.substrate[si]);
-                fluid += wall_pair_resistance(co.gamma_n, co.gamma_t, r - overlap);
-                spring += wall_pair_resistance(co.s_n, co.s_t, r - overlap);
-            }
-            if (r - z > 0.0) {
-                const HertzMindlinCoefficients co =
-                    hertz_mindlin_coefficients(r, r - z, p.mass[i], in.ff.substrate[si]);
-                fluid_now += wall_pair_resistance(co.gamma_n, co.gamma_t, z);
-            }
-        }
-        if (std::abs(in.liquid_level - z) < r + skin) spring.normal += capillary_stiffness(in.ff.capillary);
-        if (!semi) damping_t.bodies.push_back({std::uint32_t(i), fluid});
-        else add_self_block((*blocks_t)[i], fluid_now);
-        if (spring.normal > 0.0) stiffness_t.bodies.push_back({std::uint32_t(i), spring});
-
-        for (std::uint32_t s = in.nl.begin(i); s < in.nl.end(i); ++s) {
-            const std::uint32_t j = in.nl.partner(s);
-            const PairParams& pp = in.ff.pair_params(si, p.species[j]);
-            const Vec3 d = in.box.minimum_image(p.position[i], p.position[j]);
-            const double dist = norm(d);
-            const PairGeometry now = make_pair_geometry(d, dist, r, p.radius[j], p.mass[i],
-                                                        p.mass[j], {}, {}, {}, {});
-            PairGeometry g = now;
-            g.gap -= skin; // the closest this pair can come before the next rebuild
-            if (!semi) {
-                const PairResistance c = PairLaws::resistance(g, pp);
-                if (c.normal > 0.0 || c.sliding > 0.0)
-                    damping_t.pairs.push_back({std::uint32_t(i), j, g.n, c});
-            } else {
-                const PairResistance c = PairLaws::resistance(now, pp);
-                if (c.normal > 0.0 || c.sliding > 0.0 || c.rolling > 0.0 || c.twisting > 0.0) {
-                    add_self_block((*blocks_t)[i], c, now.n, c.lever_i, 1.0);
-                    add_self_block((*blocks_t)[j], c, now.n, c.lever_j, -1.0);
+        const std::size_t t = std::size_t(omp_get_thread_num());
+        Operator& damping_t = op.damping[t];
+        Operator& stiffness_t = op.stiffness[t];
+        std::vector<SelfBlock>* blocks_t = semi ? &share[t] : nullptr;
+        for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) {
+            const double r = p.radius[i], z = p.position[i].z;
+            const int si = p.species[i];
+            // Body laws. Dissipative: drag, substrate lubrication and contact damping.
+            BodyResistance fluid = stokes_drag_resistance(r, in.ff.drag);
+            BodyResistance fluid_now = fluid;
+            BodyResistance spring;
+            if (in.ff.substrate_on) {
+                fluid += substrate_lubrication_resistance(z - skin, r, in.ff.substrate_lubrication);
+                fluid_now += substrate_lubrication_resistance(z, r, in.ff.substrate_lubrication);
+                const double overlap = r - (z - skin);
+                if (overlap > 0.0) {
+                    const HertzMindlinCoefficients co =
+                        hertz_mindlin_coefficients(r, overlap, p.mass[i], in.ff.substrate[si]);
+                    fluid += wall_pair_resistance(co.gamma_n, co.gamma_t, r - overlap);
+                    spring += wall_pair_resistance(co.s_n, co.s_t, r - overlap);
+                }
+                if (r - z > 0.0) {
+                    const HertzMindlinCoefficients co =
+                        hertz_mindlin_coefficients(r, r - z, p.mass[i], in.ff.substrate[si]);
+                    fluid_now += wall_pair_resistance(co.gamma_n, co.gamma_t, z);
                 }
             }
-            // Each law's stiffness where it bounds its rate (pair_law.hpp): the contact springs
-            // at the skin-reduced gap, the van der Waals snap-in at the present one.
-            const PairResistance k = PairLaws::stiffness(g, now, pp);
-            if (k.normal > 0.0) stiffness_t.pairs.push_back({std::uint32_t(i), j, g.n, k});
+            if (std::abs(in.liquid_level - z) < r + skin)
+                spring.normal += capillary_stiffness(in.ff.capillary);
+            if (!semi)
+                damping_t.bodies.push_back({std::uint32_t(i), fluid});
+            else
+                add_self_block((*blocks_t)[i], fluid_now);
+            if (spring.normal > 0.0) stiffness_t.bodies.push_back({std::uint32_t(i), spring});
+
+            for (std::uint32_t s = in.nl.begin(i); s < in.nl.end(i); ++s) {
+                const std::uint32_t j = in.nl.partner(s);
+                const PairParams& pp = in.ff.pair_params(si, p.species[j]);
+                const Vec3 d = in.box.minimum_image(p.position[i], p.position[j]);
+                const double dist = norm(d);
+                const PairGeometry now = make_pair_geometry(d, dist, r, p.radius[j], p.mass[i],
+                                                            p.mass[j], {}, {}, {}, {});
+                PairGeometry g = now;
+                g.gap -= skin; // the closest this pair can come before the next rebuild
+                if (!semi) {
+                    const PairResistance c = PairLaws::resistance(g, pp);
+                    if (c.normal > 0.0 || c.sliding > 0.0)
+                        damping_t.pairs.push_back({std::uint32_t(i), j, g.n, c});
+                } else {
+                    const PairResistance c = PairLaws::resistance(now, pp);
+                    if (c.normal > 0.0 || c.sliding > 0.0 || c.rolling > 0.0 || c.twisting > 0.0) {
+                        add_self_block((*blocks_t)[i], c, now.n, c.lever_i, 1.0);
+                        add_self_block((*blocks_t)[j], c, now.n, c.lever_j, -1.0);
+                    }
+                }
+                // Each law's stiffness where it bounds its rate (pair_law.hpp): the contact springs
+                // at the skin-reduced gap, the van der Waals snap-in at the present one.
+                const PairResistance k = PairLaws::stiffness(g, now, pp);
+                if (k.normal > 0.0) stiffness_t.pairs.push_back({std::uint32_t(i), j, g.n, k});
+            }
         }
-    }
-    if (semi) {
+        if (semi) {
 #pragma omp barrier
-        for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i)
-            for (std::size_t u = 0; u < threads; ++u) op.blocks[i] += share[u][i];
-    }
+            for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i)
+                for (std::size_t u = 0; u < threads; ++u) op.blocks[i] += share[u][i];
+        }
     }
 
     return op;
@@ -179,8 +182,9 @@ GuardOperators assemble_operators(const GuardInputs& in) {
 
 /// λ_max of M_eff⁻¹ A by power iteration (Rayleigh quotient in the M_eff norm, M_eff = M + s D)
 /// from a random start seeded by the step; x keeps the last iterate (for the peak particle).
-double largest_rate(const GuardInputs& in, const std::vector<Operator>& a, const std::vector<SelfBlock>& blocks,
-                    double s, std::uint64_t step, std::vector<double>& x, int& iterations) {
+double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
+                    const std::vector<SelfBlock>& blocks, double s, std::uint64_t step,
+                    std::vector<double>& x, int& iterations) {
     const ParticleStore& p = in.p;
     const std::size_t n = p.size(), threads = in.threads;
     const bool semi = in.semi;
@@ -282,9 +286,11 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
     const GuardInputs in{p_, nl_, box_, ff_, liquid_level_, semi, std::size_t(threads_)};
     const GuardOperators op = assemble_operators(in);
     const std::uint64_t step = std::uint64_t(step_);
-    if (!semi) out.damping_rate = largest_rate(in, op.damping, op.blocks, 0.0, step, guard_vector_[0], out.iterations);
-    const double omega2 =
-        largest_rate(in, op.stiffness, op.blocks, semi ? settings_.dt : 0.0, step, guard_vector_[1], out.iterations);
+    if (!semi)
+        out.damping_rate =
+            largest_rate(in, op.damping, op.blocks, 0.0, step, guard_vector_[0], out.iterations);
+    const double omega2 = largest_rate(in, op.stiffness, op.blocks, semi ? settings_.dt : 0.0, step,
+                                       guard_vector_[1], out.iterations);
     out.stiffness_rate = std::sqrt(std::max(omega2, 0.0));
     const bool damping_limits = !semi && out.damping_rate * 2.0 > out.stiffness_rate;
     out.particle_id = peak_particle(p_, damping_limits ? guard_vector_[0] : guard_vector_[1]);

@@ -16,7 +16,7 @@
 namespace drydem {
 
 struct CapillaryParams {
-    double surface_tension = 0.0;                           ///< σ s_cap [N/m], as simulated; 0 = off
+    double surface_tension = 0.0; ///< σ s_cap [N/m], as simulated; 0 = off
     double contact_angle = 40.0 * std::numbers::pi / 180.0; ///< θ [rad]
 };
 

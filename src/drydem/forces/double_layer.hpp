@@ -29,15 +29,17 @@ namespace drydem {
 inline constexpr double vacuum_permittivity = 8.8541878128e-12;
 
 struct DoubleLayerParams {
-    double amplitude = 0.0;    ///< 4π ε_r ε_0 ψ₀² × scale [J/m]: V(h) = amplitude R* ln(1 + e^{-h/λ_D}); 0 = off
+    double amplitude =
+        0.0; ///< 4π ε_r ε_0 ψ₀² × scale [J/m]: V(h) = amplitude R* ln(1 + e^{-h/λ_D}); 0 = off
     double debye_length = 0.0; ///< λ_D [m]
     double cutoff_gap = 0.0;   ///< h_cut [m]
 };
 
 /// 4π ε_r ε_0 ψ₀² · scale, the prefactor of V(h) per unit R* [J/m].
-inline double double_layer_amplitude(double relative_permittivity, double surface_potential, double scale) {
-    return 4.0 * std::numbers::pi * relative_permittivity * vacuum_permittivity * surface_potential *
-           surface_potential * scale;
+inline double double_layer_amplitude(double relative_permittivity, double surface_potential,
+                                     double scale) {
+    return 4.0 * std::numbers::pi * relative_permittivity * vacuum_permittivity *
+           surface_potential * surface_potential * scale;
 }
 
 /// Magnitude of the repulsion at gap h (> 0 pushes the spheres apart) [N].
@@ -64,17 +66,21 @@ struct DoubleLayerLaw {
     using Params = DoubleLayerParams;
     struct State {};
     static constexpr std::string_view name = "double_layer";
-    static double range(const Params& p, double, double) { return p.amplitude != 0.0 ? p.cutoff_gap : 0.0; }
+    static double range(const Params& p, double, double) {
+        return p.amplitude != 0.0 ? p.cutoff_gap : 0.0;
+    }
     /// Central: only the force, no torques to add.
-    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State&, double,
-                                                        PairForce& f, PairResistance*) {
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p,
+                                                        State&, double, PairForce& f,
+                                                        PairResistance*) {
         if (p.amplitude == 0.0 || g.gap > p.cutoff_gap) return;
         f.force_i += double_layer(g, p).force_i;
     }
     static PairResistance resistance(const PairGeometry&, const Params&) { return {}; }
     /// At the closest approach before the next rebuild (the repulsion stiffens as the gap closes;
     /// clamped at contact).
-    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry&, const Params& p) {
+    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry&,
+                                    const Params& p) {
         PairGeometry at = closest;
         at.gap = std::max(at.gap, 0.0);
         return {double_layer_stiffness(at, p), 0.0, 0.0, 0.0, 0.0, 0.0};

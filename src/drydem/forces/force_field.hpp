@@ -29,9 +29,13 @@ using PairParams = PairLaws::Params;
 
 /// Law L's parameters in a species pair's entry: `law<VanDerWaalsLaw>(pp).hamaker`.
 template <class L>
-auto& law(PairParams& p) { return PairLaws::params<L>(p); }
+auto& law(PairParams& p) {
+    return PairLaws::params<L>(p);
+}
 template <class L>
-const auto& law(const PairParams& p) { return PairLaws::params<L>(p); }
+const auto& law(const PairParams& p) {
+    return PairLaws::params<L>(p);
+}
 
 /// What the laws keep per pair (the neighbour list holds one per slot).
 using PairState = PairLaws::State;
@@ -50,9 +54,9 @@ inline PairForce pair_interaction(const PairGeometry& g, const PairParams& p, Pa
 /// Every force acting on the particles, per species (pair table) and per particle.
 struct ForceField {
     int species_count = 0;
-    std::vector<PairParams> pair;                 ///< species_count², symmetric
-    std::vector<HertzMindlinParams> substrate;    ///< per species, particle-substrate contact
-    bool substrate_on = true;                     ///< rigid plane at z = 0
+    std::vector<PairParams> pair;              ///< species_count², symmetric
+    std::vector<HertzMindlinParams> substrate; ///< per species, particle-substrate contact
+    bool substrate_on = true;                  ///< rigid plane at z = 0
     SubstrateLubricationParams substrate_lubrication;
     StokesDragParams drag;
     GravityBuoyancyParams gravity;
@@ -95,9 +99,9 @@ inline ForceField uniform_contact_force_field(int species_count, double youngs_m
                                               double friction, double rolling_friction = 0.0) {
     ForceField ff;
     ff.species_count = species_count;
-    const HertzMindlinParams hm = mix_hertz_mindlin(youngs_modulus, poisson_ratio, youngs_modulus,
-                                                    poisson_ratio, restitution, friction,
-                                                    rolling_friction);
+    const HertzMindlinParams hm =
+        mix_hertz_mindlin(youngs_modulus, poisson_ratio, youngs_modulus, poisson_ratio, restitution,
+                          friction, rolling_friction);
     PairParams pp{};
     PairLaws::params<HertzMindlinLaw>(pp) = hm;
     ff.pair.assign(std::size_t(species_count) * species_count, pp);

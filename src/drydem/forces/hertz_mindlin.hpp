@@ -18,10 +18,10 @@ namespace drydem {
 
 /// Pre-mixed contact parameters of one species pair (or species-substrate pair).
 struct HertzMindlinParams {
-    double e_star = 0.0;        ///< effective Young's modulus E* [Pa]
-    double g_star = 0.0;        ///< effective shear modulus G* [Pa]
-    double beta = 0.0;          ///< damping ratio from restitution, ≥ 0 (M-2.1)
-    double friction = 0.8;      ///< sliding friction μ_s
+    double e_star = 0.0;           ///< effective Young's modulus E* [Pa]
+    double g_star = 0.0;           ///< effective shear modulus G* [Pa]
+    double beta = 0.0;             ///< damping ratio from restitution, ≥ 0 (M-2.1)
+    double friction = 0.8;         ///< sliding friction μ_s
     double rolling_friction = 0.0; ///< μ_r (C-7: off by default)
     /// Derived: 2 sqrt(5/6) β sqrt(2 E*) and 2 sqrt(5/6) β sqrt(8 G*), so that
     /// γ_n = damping_n (R* δ)^{1/4} sqrt(m*) and γ_t = damping_t (R* δ)^{1/4} sqrt(m*) (M-2.1)
@@ -88,10 +88,10 @@ inline HertzMindlinCoefficients hertz_mindlin_coefficients(double r_eff, double 
 /// contact point, R*, m*, normal n (from i toward the partner) and the kinematics.
 struct ContactKinematics {
     Vec3 n;
-    double overlap;        ///< δ [m]
-    double r_eff, m_eff;   ///< R*, m*
+    double overlap;          ///< δ [m]
+    double r_eff, m_eff;     ///< R*, m*
     double lever_i, lever_j; ///< c_i, c_j [m] (M-2.3; c_j = 0 for the substrate)
-    Vec3 v_rel;            ///< v_i - v_j
+    Vec3 v_rel;              ///< v_i - v_j
     Vec3 omega_i, omega_j;
 };
 
@@ -170,9 +170,9 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
 inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& p, Vec3& xi,
                                double dt, PairResistance* damping = nullptr) {
     const double overlap = -g.gap;
-    const ContactKinematics k{g.n,        overlap,           g.r_eff,   g.m_eff,
-                              g.r_i - 0.5 * overlap, g.r_j - 0.5 * overlap, g.v_rel,
-                              g.omega_i,  g.omega_j};
+    const ContactKinematics k{
+        g.n,     overlap,   g.r_eff,  g.m_eff, g.r_i - 0.5 * overlap, g.r_j - 0.5 * overlap,
+        g.v_rel, g.omega_i, g.omega_j};
     const ContactForce c = hertz_mindlin_contact(k, p, xi, dt);
     if (damping) {
         damping->normal += c.damping_n;
@@ -190,10 +190,13 @@ struct HertzMindlinLaw {
     };
     static constexpr std::string_view name = "hertz_mindlin";
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
-    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State& s, double dt,
-                                                        PairForce& f, PairResistance* damping) {
-        if (g.gap < 0.0) f += hertz_mindlin(g, p, s.spring, dt, damping);
-        else s.spring = Vec3{};
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p,
+                                                        State& s, double dt, PairForce& f,
+                                                        PairResistance* damping) {
+        if (g.gap < 0.0)
+            f += hertz_mindlin(g, p, s.spring, dt, damping);
+        else
+            s.spring = Vec3{};
     }
     /// γ_n and γ_t (the sticking contact's, an upper bound of the damping it applies).
     static PairResistance resistance(const PairGeometry& g, const Params& p) {
@@ -203,7 +206,8 @@ struct HertzMindlinLaw {
     }
     /// S_n, S_t at the overlap the pair can reach before the next rebuild: the springs stiffen
     /// as the overlap grows, so the closest approach bounds their rate.
-    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry&, const Params& p) {
+    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry&,
+                                    const Params& p) {
         if (closest.gap >= 0.0) return {};
         const HertzMindlinCoefficients co =
             hertz_mindlin_coefficients(closest.r_eff, -closest.gap, closest.m_eff, p);
@@ -211,12 +215,14 @@ struct HertzMindlinLaw {
     }
     /// Any component non-zero (three compares: most list slots are pairs out of reach, where the
     /// pair loop asks this every step).
-    static bool keeps(const State& s) { return s.spring.x != 0.0 || s.spring.y != 0.0 || s.spring.z != 0.0; }
+    static bool keeps(const State& s) {
+        return s.spring.x != 0.0 || s.spring.y != 0.0 || s.spring.z != 0.0;
+    }
     /// [materials] and [contact] keys (M-2.1): the two species' materials, one friction for
     /// all pairs.
     static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
-        return mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, youngs_modulus(c, b), c.poisson_ratio,
-                                 c.restitution, c.friction, c.rolling_friction);
+        return mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, youngs_modulus(c, b),
+                                 c.poisson_ratio, c.restitution, c.friction, c.rolling_friction);
     }
     static double youngs_modulus(const Config& c, const SizeClass& s) {
         return s.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;

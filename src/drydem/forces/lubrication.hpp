@@ -34,7 +34,8 @@ struct LubricationParams {
     double kappa_c;     ///< κ_c = h_c / r_L: below it every coefficient is frozen
     double log_kappa_c; ///< ln κ_c, kept with κ_c by the constructor
     LubricationParams() : LubricationParams(0.0, 0.1) {}
-    LubricationParams(double eta, double kc) : viscosity(eta), kappa_c(kc), log_kappa_c(std::log(kc)) {}
+    LubricationParams(double eta, double kc)
+        : viscosity(eta), kappa_c(kc), log_kappa_c(std::log(kc)) {}
 };
 
 /// r_L = 2R* = 2 r_i r_j / (r_i + r_j) (C-15).
@@ -91,15 +92,22 @@ struct LubricationLaw {
     using Params = LubricationParams;
     struct State {};
     static constexpr std::string_view name = "lubrication";
-    static double range(const Params& p, double r_i, double r_j) { return lubrication_range(p, r_i, r_j); }
-    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State&, double,
-                                                        PairForce& f, PairResistance* r) {
+    static double range(const Params& p, double r_i, double r_j) {
+        return lubrication_range(p, r_i, r_j);
+    }
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p,
+                                                        State&, double, PairForce& f,
+                                                        PairResistance* r) {
         const PairResistance lub = lubrication_resistance(g, p);
         if (r) *r += lub;
         f += resistance_force(lub, g.n, g.v_rel, g.omega_i, g.omega_j);
     }
-    static PairResistance resistance(const PairGeometry& g, const Params& p) { return lubrication_resistance(g, p); }
-    static PairResistance stiffness(const PairGeometry&, const PairGeometry&, const Params&) { return {}; }
+    static PairResistance resistance(const PairGeometry& g, const Params& p) {
+        return lubrication_resistance(g, p);
+    }
+    static PairResistance stiffness(const PairGeometry&, const PairGeometry&, const Params&) {
+        return {};
+    }
     static bool keeps(const State&) { return false; }
     /// [lubrication] keys (M-4); `viscosity` as simulated (drying/scaling.cpp: η, or η/b, C-17).
     static Params from_config(const Config& c, const SizeClass&, const SizeClass&) {

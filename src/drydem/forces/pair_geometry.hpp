@@ -8,14 +8,14 @@
 namespace drydem {
 
 struct PairGeometry {
-    Vec3 n;              ///< unit normal from i to j
-    double distance;     ///< centre distance D [m]
-    double gap;          ///< surface gap h = D - r_i - r_j [m]
-    double r_i, r_j;     ///< radii [m]
-    double r_eff;        ///< R* = r_i r_j / (r_i + r_j) [m]
-    double m_eff;        ///< m* = m_i m_j / (m_i + m_j) [kg]
-    Vec3 v_rel;          ///< v_i - v_j [m/s]
-    double v_n;          ///< v_rel·n, > 0 approaching [m/s]
+    Vec3 n;                ///< unit normal from i to j
+    double distance;       ///< centre distance D [m]
+    double gap;            ///< surface gap h = D - r_i - r_j [m]
+    double r_i, r_j;       ///< radii [m]
+    double r_eff;          ///< R* = r_i r_j / (r_i + r_j) [m]
+    double m_eff;          ///< m* = m_i m_j / (m_i + m_j) [kg]
+    Vec3 v_rel;            ///< v_i - v_j [m/s]
+    double v_n;            ///< v_rel·n, > 0 approaching [m/s]
     Vec3 omega_i, omega_j; ///< angular velocities [rad/s]
 };
 

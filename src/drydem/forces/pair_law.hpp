@@ -79,7 +79,7 @@ struct LawParams<L, Rest...> {
 template <PairLaw... Ls>
 struct PairLawList {
     using Params = LawParams<Ls...>; ///< one species pair's parameters
-    using State = LawStates<Ls...>;                    ///< one pair's kept state
+    using State = LawStates<Ls...>;  ///< one pair's kept state
 
     /// The parameters (or state) of law L.
     template <class L>
@@ -90,24 +90,35 @@ struct PairLawList {
         return k;
     }();
     template <class L>
-    static auto& params(Params& p) { return member_at<index_of<L>>(p); }
+    static auto& params(Params& p) {
+        return member_at<index_of<L>>(p);
+    }
     template <class L>
-    static const auto& params(const Params& p) { return member_at<index_of<L>>(p); }
+    static const auto& params(const Params& p) {
+        return member_at<index_of<L>>(p);
+    }
     template <class L>
-    static auto& state(State& s) { return state_at<index_of<L>>(s); }
+    static auto& state(State& s) {
+        return state_at<index_of<L>>(s);
+    }
 
     /// Every law's parameters from the configuration (each law's `from_config`, beside the law).
     template <class... Args>
-    static Params from_config(const Args&... args) { return from_config_of(all{}, args...); }
+    static Params from_config(const Args&... args) {
+        return from_config_of(all{}, args...);
+    }
 
     /// Interaction range of the pair beyond contact [m]: the largest of the laws' ranges.
-    static double range(const Params& p, double r_i, double r_j) { return range_of(all{}, p, r_i, r_j); }
+    static double range(const Params& p, double r_i, double r_j) {
+        return range_of(all{}, p, r_i, r_j);
+    }
 
     /// Force and torques of all laws, in list order. With `resistance`, it receives the sum of the
     /// dissipative parts, with the lever arms r + h/2 that every dissipative pair law shares
     /// (centres to the mid-plane of the gap; r - δ/2 in overlap). Always inlined into the pair
     /// loop, like the laws were before they had a list: an out-of-line call here costs 10-20 %.
-    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p, State& s, double dt,
+    [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p,
+                                                         State& s, double dt,
                                                          PairResistance* resistance = nullptr) {
         PairForce f = force_of(all{}, g, p, s, dt, resistance);
         if (resistance) set_levers(*resistance, g);
@@ -122,7 +133,8 @@ struct PairLawList {
     }
 
     /// Stiffness of the conservative parts (stability guard), levers at `closest`.
-    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry& now, const Params& p) {
+    static PairResistance stiffness(const PairGeometry& closest, const PairGeometry& now,
+                                    const Params& p) {
         PairResistance k = stiffness_of(all{}, closest, now, p);
         set_levers(k, closest);
         return k;
@@ -135,7 +147,8 @@ struct PairLawList {
     static std::string_view layout() {
         static const std::string text = [] {
             std::string t;
-            ((t += std::string(Ls::name) + ":" + std::to_string(sizeof(typename Ls::State)) + ";"), ...);
+            ((t += std::string(Ls::name) + ":" + std::to_string(sizeof(typename Ls::State)) + ";"),
+             ...);
             return t;
         }();
         return text;
@@ -149,11 +162,15 @@ private:
     /// The K-th member of a LawStates or LawParams.
     template <std::size_t K, class S>
     [[gnu::always_inline]] static inline auto& member_at(S& s) {
-        if constexpr (K == 0) return s.first;
-        else return member_at<K - 1>(s.rest);
+        if constexpr (K == 0)
+            return s.first;
+        else
+            return member_at<K - 1>(s.rest);
     }
     template <std::size_t K, class S>
-    [[gnu::always_inline]] static inline auto& state_at(S& s) { return member_at<K>(s); }
+    [[gnu::always_inline]] static inline auto& state_at(S& s) {
+        return member_at<K>(s);
+    }
 
     template <std::size_t... K, class... Args>
     static Params from_config_of(std::index_sequence<K...>, const Args&... args) {
@@ -171,15 +188,16 @@ private:
         return h;
     }
     template <std::size_t... K>
-    [[gnu::always_inline]] static inline PairForce force_of(std::index_sequence<K...>, const PairGeometry& g,
-                                                            const Params& p, State& s, double dt,
-                                                            PairResistance* resistance) {
+    [[gnu::always_inline]] static inline PairForce
+    force_of(std::index_sequence<K...>, const PairGeometry& g, const Params& p, State& s, double dt,
+             PairResistance* resistance) {
         PairForce f{};
         (at<K>::add_force(g, member_at<K>(p), state_at<K>(s), dt, f, resistance), ...);
         return f;
     }
     template <std::size_t... K>
-    static PairResistance resistance_of(std::index_sequence<K...>, const PairGeometry& g, const Params& p) {
+    static PairResistance resistance_of(std::index_sequence<K...>, const PairGeometry& g,
+                                        const Params& p) {
         PairResistance r;
         ((r += at<K>::resistance(g, member_at<K>(p))), ...);
         return r;

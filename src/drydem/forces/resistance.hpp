@@ -28,10 +28,10 @@ namespace drydem {
 
 /// Coefficients of the pair form [kg/s for a_n, a_t; kg m²/s for a_r, a_w; m for the levers].
 struct PairResistance {
-    double normal = 0.0;   ///< a_n
-    double sliding = 0.0;  ///< a_t
-    double rolling = 0.0;  ///< a_r
-    double twisting = 0.0; ///< a_w
+    double normal = 0.0;                 ///< a_n
+    double sliding = 0.0;                ///< a_t
+    double rolling = 0.0;                ///< a_r
+    double twisting = 0.0;               ///< a_w
     double lever_i = 0.0, lever_j = 0.0; ///< c_i, c_j
 
     /// Sum of two laws acting on the same pair with the same lever arms.
@@ -60,11 +60,11 @@ inline PairForce resistance_force(const PairResistance& r, const Vec3& n, const 
 
 /// Coefficients of the body form [kg/s; kg m/s for b; kg m²/s for d_t, d_z].
 struct BodyResistance {
-    double normal = 0.0;        ///< a_z
-    double tangential = 0.0;    ///< a_t
-    double coupling = 0.0;      ///< b
-    double rotation_t = 0.0;    ///< d_t
-    double rotation_n = 0.0;    ///< d_z
+    double normal = 0.0;     ///< a_z
+    double tangential = 0.0; ///< a_t
+    double coupling = 0.0;   ///< b
+    double rotation_t = 0.0; ///< d_t
+    double rotation_n = 0.0; ///< d_z
     BodyResistance& operator+=(const BodyResistance& o) {
         normal += o.normal;
         tangential += o.tangential;
@@ -111,9 +111,9 @@ struct Sym3 {
 
 /// A particle's 6×6 self-block D_i = [[A, -[k]×], [[k]×, B]] (see the header).
 struct SelfBlock {
-    Sym3 a;   ///< translation-translation
-    Sym3 b;   ///< rotation-rotation
-    Vec3 k;   ///< coupling: D_ωv = [k]×
+    Sym3 a; ///< translation-translation
+    Sym3 b; ///< rotation-rotation
+    Vec3 k; ///< coupling: D_ωv = [k]×
     SelfBlock& operator+=(const SelfBlock& o) {
         a += o.a;
         b += o.b;

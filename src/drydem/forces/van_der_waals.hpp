@@ -48,10 +48,13 @@ struct VanDerWaalsLaw {
     using Params = VanDerWaalsParams;
     struct State {};
     static constexpr std::string_view name = "van_der_waals";
-    static double range(const Params& p, double r_i, double r_j) { return van_der_waals_range(p, r_i, r_j); }
+    static double range(const Params& p, double r_i, double r_j) {
+        return van_der_waals_range(p, r_i, r_j);
+    }
     /// Central: only the force, no torques to add.
-    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p, State&, double,
-                                                        PairForce& f, PairResistance*) {
+    [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p,
+                                                        State&, double, PairForce& f,
+                                                        PairResistance*) {
         if (p.hamaker == 0.0 || g.gap > p.cutoff_gap) return;
         f.force_i += van_der_waals(g, p).force_i;
     }
@@ -69,9 +72,12 @@ struct VanDerWaalsLaw {
     /// gap by material pair; cut-off 0 = the pair's r_L = 2R* (C-13, C-15).
     static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
         Params p;
-        if (a.is_cb && b.is_cb) p = {c.hamaker_cb_cb, c.min_gap_cb_cb, 0.0};
-        else if (a.is_cb || b.is_cb) p = {c.hamaker_ncm_cb, c.min_gap_ncm_cb, 0.0};
-        else p = {c.hamaker_ncm_ncm, c.min_gap_ncm_ncm, 0.0};
+        if (a.is_cb && b.is_cb)
+            p = {c.hamaker_cb_cb, c.min_gap_cb_cb, 0.0};
+        else if (a.is_cb || b.is_cb)
+            p = {c.hamaker_ncm_cb, c.min_gap_ncm_cb, 0.0};
+        else
+            p = {c.hamaker_ncm_ncm, c.min_gap_ncm_ncm, 0.0};
         const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
         p.cutoff_gap = c.vdw_cutoff > 0.0 ? c.vdw_cutoff : lubrication_radius(ra, rb);
         return p;

@@ -52,11 +52,15 @@ std::string nearest_key(std::string_view key) {
 
 std::string node_text(const toml::node& n) {
     std::ostringstream s;
-    if (auto str = n.as_string()) s << '"' << str->get() << '"';
-    else n.visit([&](auto&& v) { s << v; });
+    if (auto str = n.as_string())
+        s << '"' << str->get() << '"';
+    else
+        n.visit([&](auto&& v) { s << v; });
     // Error messages only: a 60,000-character value is cut to its two ends.
     std::string t = s.str();
-    if (t.size() > 120) t = fmt::format("{}...{} ({} characters)", t.substr(0, 60), t.substr(t.size() - 30), t.size());
+    if (t.size() > 120)
+        t = fmt::format("{}...{} ({} characters)", t.substr(0, 60), t.substr(t.size() - 30),
+                        t.size());
     return t;
 }
 
@@ -82,7 +86,11 @@ void check_range(const Field& f, double v, const std::string& text) {
 bool valid_utf8(std::string_view s) {
     for (std::size_t i = 0; i < s.size();) {
         const auto b = static_cast<unsigned char>(s[i]);
-        const int n = b < 0x80 ? 0 : (b >> 5) == 0x6 ? 1 : (b >> 4) == 0xe ? 2 : (b >> 3) == 0x1e ? 3 : -1;
+        const int n = b < 0x80           ? 0
+                      : (b >> 5) == 0x6  ? 1
+                      : (b >> 4) == 0xe  ? 2
+                      : (b >> 3) == 0x1e ? 3
+                                         : -1;
         if (n < 0 || i + std::size_t(n) >= s.size()) return false;
         char32_t cp = n == 0 ? b : b & (0x3f >> n);
         for (int k = 1; k <= n; ++k) {
@@ -103,15 +111,17 @@ void check_name(const Field& f, const std::string& v, const std::string& text) {
     const bool control = std::any_of(v.begin(), v.end(), [](char ch) {
         return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f;
     });
-    if (v.empty() || v.size() > 200 || control || v.find('/') != std::string::npos ||
-        v == "." || v == ".." || !valid_utf8(v))
-        throw InputError(fmt::format("config key '{}': {} is not allowed; allowed: 1 to 200 characters of "
-                                     "UTF-8 without control characters (newline, tab) or '/', "
-                                     "not \".\" or \"..\" (it names the output folder)",
-                                     f.key, text));
+    if (v.empty() || v.size() > 200 || control || v.find('/') != std::string::npos || v == "." ||
+        v == ".." || !valid_utf8(v))
+        throw InputError(
+            fmt::format("config key '{}': {} is not allowed; allowed: 1 to 200 characters of "
+                        "UTF-8 without control characters (newline, tab) or '/', "
+                        "not \".\" or \"..\" (it names the output folder)",
+                        f.key, text));
 }
 
-void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::string>& bare_lengths) {
+void assign(Config& c, const Field& f, const toml::node& n,
+            std::vector<std::string>& bare_lengths) {
     const std::string text = node_text(n);
     std::visit(
         [&](auto member) {
@@ -123,20 +133,28 @@ void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::str
                 if (f.dim == D::length && !n.is_string()) bare_lengths.emplace_back(f.key);
             } else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::uint64_t>) {
                 auto v = n.as_integer();
-                if (!v) throw InputError(fmt::format("config key '{}': {} must be an integer", f.key, text));
+                if (!v)
+                    throw InputError(
+                        fmt::format("config key '{}': {} must be an integer", f.key, text));
                 check_range(f, double(v->get()), text);
                 c.*member = T(v->get());
             } else if constexpr (std::is_same_v<T, bool>) {
                 auto v = n.as_boolean();
-                if (!v) throw InputError(fmt::format("config key '{}': {} must be true or false", f.key, text));
+                if (!v)
+                    throw InputError(
+                        fmt::format("config key '{}': {} must be true or false", f.key, text));
                 c.*member = v->get();
             } else if constexpr (std::is_same_v<T, std::string>) {
                 auto v = n.as_string();
-                if (!v) throw InputError(fmt::format("config key '{}': {} must be a string", f.key, text));
+                if (!v)
+                    throw InputError(
+                        fmt::format("config key '{}': {} must be a string", f.key, text));
                 const std::vector<std::string_view> choices = f.choices();
-                if (!choices.empty() && std::find(choices.begin(), choices.end(), v->get()) == choices.end()) {
+                if (!choices.empty() &&
+                    std::find(choices.begin(), choices.end(), v->get()) == choices.end()) {
                     std::string allowed;
-                    for (auto ch : choices) allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", ch);
+                    for (auto ch : choices)
+                        allowed += fmt::format("{}\"{}\"", allowed.empty() ? "" : ", ", ch);
                     throw InputError(fmt::format("config key '{}': {} is not allowed; allowed: {}",
                                                  f.key, text, allowed));
                 }
@@ -145,7 +163,8 @@ void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::str
             } else {
                 auto arr = n.as_array();
                 if (!arr || (arr->empty() && !f.allowed.may_be_empty))
-                    throw InputError(fmt::format("config key '{}': {} must be a non-empty array", f.key, text));
+                    throw InputError(
+                        fmt::format("config key '{}': {} must be a non-empty array", f.key, text));
                 T values;
                 for (const toml::node& e : *arr) {
                     const double v = read_number(e, f);
@@ -158,24 +177,25 @@ void assign(Config& c, const Field& f, const toml::node& n, std::vector<std::str
         f.member);
 }
 
-
 /// The array-of-tables keys of [calibration]: each entry a table with exactly the keys listed.
 const toml::table& calibration_entry(const toml::node& e, const std::string& label,
                                      std::initializer_list<std::string_view> allowed,
                                      std::initializer_list<std::string_view> required) {
     const toml::table* t = e.as_table();
     if (!t)
-        throw InputError(fmt::format("config key '{}': {} must be a table with keys {} (e.g. "
-                                     "[[calibration.parameters]] key = \"contact.friction\" min = 0.4 max = 1.2)",
-                                     label, node_text(e), fmt::join(allowed, ", ")));
+        throw InputError(fmt::format(
+            "config key '{}': {} must be a table with keys {} (e.g. "
+            "[[calibration.parameters]] key = \"contact.friction\" min = 0.4 max = 1.2)",
+            label, node_text(e), fmt::join(allowed, ", ")));
     for (const auto& [k, v] : *t)
         if (std::find(allowed.begin(), allowed.end(), k.str()) == allowed.end())
-            throw InputError(fmt::format("unknown config key '{}.{}' (value {}); allowed in this table: {}", label,
-                                         k.str(), node_text(v), fmt::join(allowed, ", ")));
+            throw InputError(
+                fmt::format("unknown config key '{}.{}' (value {}); allowed in this table: {}",
+                            label, k.str(), node_text(v), fmt::join(allowed, ", ")));
     for (std::string_view r : required)
         if (!t->contains(r))
-            throw InputError(fmt::format("config key '{}': missing '{}' (a table needs {})", label, r,
-                                         fmt::join(required, ", ")));
+            throw InputError(fmt::format("config key '{}': missing '{}' (a table needs {})", label,
+                                         r, fmt::join(required, ", ")));
     return *t;
 }
 
@@ -184,29 +204,42 @@ const toml::table& calibration_entry(const toml::node& e, const std::string& lab
 void parse_calibration_parameters(const toml::node& n, Config& c) {
     const toml::array* arr = n.as_array();
     if (!arr)
-        throw InputError(fmt::format("config key 'calibration.parameters': {} must be an array of tables "
-                                     "([[calibration.parameters]])", node_text(n)));
+        throw InputError(
+            fmt::format("config key 'calibration.parameters': {} must be an array of tables "
+                        "([[calibration.parameters]])",
+                        node_text(n)));
     c.calibration_parameters.clear();
     for (std::size_t i = 0; i < arr->size(); ++i) {
         const std::string label = fmt::format("calibration.parameters[{}]", i + 1);
-        const toml::table& t = calibration_entry((*arr)[i], label, {"key", "min", "max", "scale"}, {"key", "min", "max"});
+        const toml::table& t = calibration_entry((*arr)[i], label, {"key", "min", "max", "scale"},
+                                                 {"key", "min", "max"});
         const auto key = t["key"].value<std::string>();
-        if (!key) throw InputError(fmt::format("config key '{}.key': {} must be a string naming a config key",
-                                               label, node_text(*t.get("key"))));
+        if (!key)
+            throw InputError(
+                fmt::format("config key '{}.key': {} must be a string naming a config key", label,
+                            node_text(*t.get("key"))));
         const auto& fields = schema();
-        auto it = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.key == *key; });
+        auto it = std::find_if(fields.begin(), fields.end(),
+                               [&](const Field& f) { return f.key == *key; });
         if (it == fields.end())
-            throw InputError(fmt::format("config key '{}.key': \"{}\" is not a config key; did you mean '{}'? "
-                                         "(`drydem config default` lists every key)", label, *key, nearest_key(*key)));
-        if (!std::holds_alternative<double Config::*>(it->member) || key->starts_with("calibration.") ||
-            key->starts_with("scheduler.") || key->starts_with("study.") || key->starts_with("output."))
-            throw InputError(fmt::format("config key '{}.key': \"{}\" cannot be calibrated; allowed: a single "
-                                         "numeric key of the model (not an integer, string, list, or a "
-                                         "[study], [output], [scheduler] or [calibration] key)", label, *key));
+            throw InputError(
+                fmt::format("config key '{}.key': \"{}\" is not a config key; did you mean '{}'? "
+                            "(`drydem config default` lists every key)",
+                            label, *key, nearest_key(*key)));
+        if (!std::holds_alternative<double Config::*>(it->member) ||
+            key->starts_with("calibration.") || key->starts_with("scheduler.") ||
+            key->starts_with("study.") || key->starts_with("output."))
+            throw InputError(
+                fmt::format("config key '{}.key': \"{}\" cannot be calibrated; allowed: a single "
+                            "numeric key of the model (not an integer, string, list, or a "
+                            "[study], [output], [scheduler] or [calibration] key)",
+                            label, *key));
         for (const CalibrationParameter& p : c.calibration_parameters)
             if (p.key == *key)
-                throw InputError(fmt::format("config key '{}.key': \"{}\" is already a calibration parameter; "
-                                             "allowed: each key once", label, *key));
+                throw InputError(
+                    fmt::format("config key '{}.key': \"{}\" is already a calibration parameter; "
+                                "allowed: each key once",
+                                label, *key));
         CalibrationParameter p;
         p.key = *key;
         double bounds[2];
@@ -222,17 +255,20 @@ void parse_calibration_parameters(const toml::node& n, Config& c) {
         p.min = bounds[0];
         p.max = bounds[1];
         if (!(p.min < p.max))
-            throw InputError(fmt::format("config key '{}': min {} is not below max {}; allowed: min < max", label,
-                                         node_text(*t.get("min")), node_text(*t.get("max"))));
+            throw InputError(
+                fmt::format("config key '{}': min {} is not below max {}; allowed: min < max",
+                            label, node_text(*t.get("min")), node_text(*t.get("max"))));
         if (t.contains("scale")) {
             const auto scale = t["scale"].value<std::string>();
             if (!scale || (*scale != "linear" && *scale != "log"))
-                throw InputError(fmt::format("config key '{}.scale': {} is not allowed; allowed: \"linear\", \"log\"",
-                                             label, node_text(*t.get("scale"))));
+                throw InputError(fmt::format(
+                    "config key '{}.scale': {} is not allowed; allowed: \"linear\", \"log\"", label,
+                    node_text(*t.get("scale"))));
             p.log = *scale == "log";
             if (p.log && !(p.min > 0.0))
-                throw InputError(fmt::format("config key '{}.min': {} with scale = \"log\"; allowed: > 0", label,
-                                             node_text(*t.get("min"))));
+                throw InputError(
+                    fmt::format("config key '{}.min': {} with scale = \"log\"; allowed: > 0", label,
+                                node_text(*t.get("min"))));
         }
         c.calibration_parameters.push_back(p);
     }
@@ -243,7 +279,8 @@ void parse_calibration_parameters(const toml::node& n, Config& c) {
 std::string quoted_quantities(bool curves_only) {
     std::string names;
     for (const auto& q : calibration_quantities())
-        if (q.curve || !curves_only) names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", q.name);
+        if (q.curve || !curves_only)
+            names += fmt::format("{}\"{}\"", names.empty() ? "" : ", ", q.name);
     return names;
 }
 
@@ -252,41 +289,56 @@ std::string quoted_quantities(bool curves_only) {
 void parse_calibration_targets(const toml::node& n, Config& c) {
     const toml::array* arr = n.as_array();
     if (!arr)
-        throw InputError(fmt::format("config key 'calibration.targets': {} must be an array of tables "
-                                     "([[calibration.targets]])", node_text(n)));
+        throw InputError(
+            fmt::format("config key 'calibration.targets': {} must be an array of tables "
+                        "([[calibration.targets]])",
+                        node_text(n)));
     c.calibration_targets.clear();
     for (std::size_t i = 0; i < arr->size(); ++i) {
         const std::string label = fmt::format("calibration.targets[{}]", i + 1);
         const toml::table& t =
-            calibration_entry((*arr)[i], label, {"quantity", "value", "uncertainty", "at"}, {"quantity", "value", "uncertainty"});
+            calibration_entry((*arr)[i], label, {"quantity", "value", "uncertainty", "at"},
+                              {"quantity", "value", "uncertainty"});
         const auto name = t["quantity"].value<std::string>();
         const auto& qs = calibration_quantities();
-        auto q = std::find_if(qs.begin(), qs.end(), [&](const CalibrationQuantity& x) { return name && x.name == *name; });
+        auto q = std::find_if(qs.begin(), qs.end(), [&](const CalibrationQuantity& x) {
+            return name && x.name == *name;
+        });
         if (q == qs.end())
-            throw InputError(fmt::format("config key '{}.quantity': {} is not allowed; allowed: {}", label,
-                                         node_text(*t.get("quantity")), quoted_quantities(false)));
+            throw InputError(fmt::format("config key '{}.quantity': {} is not allowed; allowed: {}",
+                                         label, node_text(*t.get("quantity")),
+                                         quoted_quantities(false)));
         CalibrationTarget target;
         target.quantity = *name;
         for (const char* which : {"value", "uncertainty"}) {
             const std::string bl = fmt::format("{}.{} ({})", label, which, *name);
-            Field g{bl, &Config::time_step, Dimension(q->dimension),
-                    config_schema::above(which[0] == 'v' ? q->lo : 0.0, which[0] == 'v' ? q->hi : q->hi - q->lo), {}, {}};
+            Field g{bl,
+                    &Config::time_step,
+                    Dimension(q->dimension),
+                    config_schema::above(which[0] == 'v' ? q->lo : 0.0,
+                                         which[0] == 'v' ? q->hi : q->hi - q->lo),
+                    {},
+                    {}};
             const toml::node& v = *t.get(which);
             const double x = read_number(v, g);
             if (g.dim == D::length && !v.is_string() && x > 1e-3)
-                throw InputError(fmt::format("config key '{}': {} is {:g} m; did you mean \"{} um\"?", bl,
-                                             node_text(v), x, node_text(v)));
+                throw InputError(
+                    fmt::format("config key '{}': {} is {:g} m; did you mean \"{} um\"?", bl,
+                                node_text(v), x, node_text(v)));
             check_range(g, x, node_text(v));
             (which[0] == 'v' ? target.value : target.uncertainty) = x;
         }
         if (q->curve && !t.contains("at"))
-            throw InputError(fmt::format("config key '{}': missing 'at' (\"{}\" is a point of a curve: give its "
-                                         "process time, e.g. at = \"40 s\")", label, *name));
+            throw InputError(
+                fmt::format("config key '{}': missing 'at' (\"{}\" is a point of a curve: give its "
+                            "process time, e.g. at = \"40 s\")",
+                            label, *name));
         if (t.contains("at")) {
             if (!q->curve)
-                throw InputError(fmt::format("config key '{}.at': {} is not allowed for \"{}\", a result of the "
-                                             "whole run; allowed only for a point of a curve ({})", label,
-                                             node_text(*t.get("at")), *name, quoted_quantities(true)));
+                throw InputError(
+                    fmt::format("config key '{}.at': {} is not allowed for \"{}\", a result of the "
+                                "whole run; allowed only for a point of a curve ({})",
+                                label, node_text(*t.get("at")), *name, quoted_quantities(true)));
             const std::string bl = fmt::format("{}.at ({})", label, *name);
             Field g{bl, &Config::time_step, D::time, config_schema::above(0.0, 1e6), {}, {}};
             target.at = read_number(*t.get("at"), g);
@@ -299,7 +351,8 @@ void parse_calibration_targets(const toml::node& n, Config& c) {
 void walk(const toml::table& t, const std::string& prefix, Config& c,
           std::vector<std::string>& bare_lengths) {
     for (const auto& [k, node] : t) {
-        const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+        const std::string key =
+            prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
         if (auto sub = node.as_table()) {
             walk(*sub, key, c, bare_lengths);
             continue;
@@ -313,7 +366,8 @@ void walk(const toml::table& t, const std::string& prefix, Config& c,
             continue;
         }
         const auto& fields = schema();
-        auto it = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.key == key; });
+        auto it = std::find_if(fields.begin(), fields.end(),
+                               [&](const Field& f) { return f.key == key; });
         if (it == fields.end())
             throw InputError(fmt::format("unknown config key '{}' (value {}); did you mean '{}'? "
                                          "(`drydem config default` lists every key)",
@@ -325,7 +379,8 @@ void walk(const toml::table& t, const std::string& prefix, Config& c,
 void apply_override(toml::table& root, const std::string& spec) {
     const auto eq = spec.find('=');
     if (eq == std::string::npos || eq == 0)
-        throw InputError(fmt::format("--set '{}': expected KEY=VALUE, e.g. --set run.seed=7", spec));
+        throw InputError(
+            fmt::format("--set '{}': expected KEY=VALUE, e.g. --set run.seed=7", spec));
     const std::string key = spec.substr(0, eq), value = spec.substr(eq + 1);
     toml::table* t = &root;
     std::size_t start = 0;
@@ -347,8 +402,10 @@ void apply_override(toml::table& root, const std::string& spec) {
     }
     // "1\nfoo=2" parses as two keys: the value must be exactly one TOML value, never more keys.
     if (parsed->size() != 1)
-        throw InputError(fmt::format("--set '{}': the value defines further keys; give one value per --set "
-                                     "(no newlines)", spec));
+        throw InputError(
+            fmt::format("--set '{}': the value defines further keys; give one value per --set "
+                        "(no newlines)",
+                        spec));
     t->insert_or_assign(leaf, *parsed->get("v"));
 }
 
@@ -359,10 +416,12 @@ void check_scaling(const Config& c) {
     for (const auto& [key, value] : {std::pair{"scaling.capillary_factor", c.capillary_factor},
                                      std::pair{"scaling.hamaker_factor", c.hamaker_factor}})
         if (value != 0.0)
-            throw InputError(fmt::format(
-                "config key '{}': {:g} is not allowed with scaling.scheme = \"force_ratio\", which scales "
-                "every conservative force by time_factor / viscosity_reduction = {:g}; allowed: 0 (remove the "
-                "key), or scaling.scheme = \"paper\"", key, value, c.time_factor / c.viscosity_reduction));
+            throw InputError(fmt::format("config key '{}': {:g} is not allowed with scaling.scheme "
+                                         "= \"force_ratio\", which scales "
+                                         "every conservative force by time_factor / "
+                                         "viscosity_reduction = {:g}; allowed: 0 (remove the "
+                                         "key), or scaling.scheme = \"paper\"",
+                                         key, value, c.time_factor / c.viscosity_reduction));
 }
 
 /// Cross-key rules of the [dryer] section (per-key ranges are in the schema).
@@ -376,7 +435,8 @@ void check_dryer(const Config& c) {
     for (std::size_t k = 0; k < n; ++k)
         if (c.dryer_air_temperatures[k] < c.dryer_initial_temperature)
             throw InputError(fmt::format(
-                "config key 'dryer.air_temperatures': {:g} K ({:g} degC) in zone {} is below the film's "
+                "config key 'dryer.air_temperatures': {:g} K ({:g} degC) in zone {} is below the "
+                "film's "
                 "initial temperature dryer.initial_film_temperature = {:g} K; allowed >= {:g} K",
                 c.dryer_air_temperatures[k], c.dryer_air_temperatures[k] - 273.15, k + 1,
                 c.dryer_initial_temperature, c.dryer_initial_temperature));
@@ -385,16 +445,17 @@ void check_dryer(const Config& c) {
             if (std::abs(c.dryer_zone_lengths[k] - c.zone_length) > 1e-9 * c.zone_length)
                 throw InputError(fmt::format(
                     "config key 'dryer.zone_lengths': zone {} is {:g} m but the DEM liquid-level "
-                    "schedule uses equal zones of dryer.zone_length = {:g} m; with dryer.schedule = "
-                    "\"model\" every entry must equal dryer.zone_length", k + 1,
-                    c.dryer_zone_lengths[k], c.zone_length));
+                    "schedule uses equal zones of dryer.zone_length = {:g} m; with dryer.schedule "
+                    "= "
+                    "\"model\" every entry must equal dryer.zone_length",
+                    k + 1, c.dryer_zone_lengths[k], c.zone_length));
 }
 
 } // namespace
 
 const std::vector<CalibrationQuantity>& calibration_quantities() {
-    constexpr int L = int(Dimension::length), R = int(Dimension::density), N = int(Dimension::dimensionless),
-                  T = int(Dimension::time);
+    constexpr int L = int(Dimension::length), R = int(Dimension::density),
+                  N = int(Dimension::dimensionless), T = int(Dimension::time);
     static const std::vector<CalibrationQuantity> q = {
         {"final_thickness", L, "final_thickness_um", 1e-6, "um", 0.0, 1e-2},
         {"final_thickness_relaxed", L, "final_thickness_relaxed_um", 1e-6, "um", 0.0, 1e-2},
@@ -432,7 +493,8 @@ ParsedConfig parse_config(std::string_view toml_text, std::string_view source_na
     const double mass_sum = c.ncm_mass_fraction + c.pvdf_mass_fraction + c.cb_mass_fraction;
     if (std::abs(mass_sum - 1.0) > 1e-6)
         throw InputError(fmt::format("config keys 'formulation.*_mass_fraction': NCM + PVDF + CB = "
-                                     "{:g}, must sum to 1", mass_sum));
+                                     "{:g}, must sum to 1",
+                                     mass_sum));
     const std::size_t n_measured = c.measured_loadings.size();
     for (const auto& [key, values, optional] :
          {std::tuple{"study.measured_thickness", &c.measured_thickness, false},
@@ -440,21 +502,25 @@ ParsedConfig parse_config(std::string_view toml_text, std::string_view source_na
           std::tuple{"study.measured_density", &c.measured_density, true},
           std::tuple{"study.measured_density_std", &c.measured_density_std, true}})
         if (values->size() != n_measured && !(optional && values->empty()))
-            throw InputError(fmt::format("config key '{}': {} values for {} study.measured_loadings; "
-                                         "allowed: one per measured loading{}",
-                                         key, values->size(), n_measured, optional ? " or none" : ""));
+            throw InputError(
+                fmt::format("config key '{}': {} values for {} study.measured_loadings; "
+                            "allowed: one per measured loading{}",
+                            key, values->size(), n_measured, optional ? " or none" : ""));
     check_dryer(c);
     check_scaling(c);
     if (c.calibration_initial_points > c.calibration_evaluations)
         throw InputError(fmt::format("config key 'calibration.initial_points': {} is more than "
-                                     "calibration.evaluations = {}; allowed 0..{}", c.calibration_initial_points,
-                                     c.calibration_evaluations, c.calibration_evaluations));
+                                     "calibration.evaluations = {}; allowed 0..{}",
+                                     c.calibration_initial_points, c.calibration_evaluations,
+                                     c.calibration_evaluations));
     // sbatch --partition: a partition name (letters, digits, '_', '-', '.', ',' for a list).
-    if (c.slurm_partition.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.,") !=
+    if (c.slurm_partition.find_first_not_of(
+            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.,") !=
         std::string::npos)
-        throw InputError(fmt::format("config key 'scheduler.partition': \"{}\" is not allowed; allowed: a "
-                                     "partition name of letters, digits, '_', '-', '.' (',' between names)",
-                                     c.slurm_partition));
+        throw InputError(
+            fmt::format("config key 'scheduler.partition': \"{}\" is not allowed; allowed: a "
+                        "partition name of letters, digits, '_', '-', '.' (',' between names)",
+                        c.slurm_partition));
     return parsed;
 }
 
@@ -484,7 +550,8 @@ std::string to_toml(const Config& c) {
                     for (double x : v) a.push_back(x);
                     t.insert(leaf, std::move(a));
                 } else if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, int>) {
-                    t.insert(leaf, std::int64_t(v)); // TOML integers are 64-bit signed (seed <= 2^63 - 1)
+                    t.insert(leaf,
+                             std::int64_t(v)); // TOML integers are 64-bit signed (seed <= 2^63 - 1)
                 } else {
                     t.insert(leaf, v);
                 }

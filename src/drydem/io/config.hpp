@@ -26,7 +26,8 @@ struct CalibrationParameter {
 struct CalibrationTarget {
     std::string quantity;
     double value = 0.0, uncertainty = 0.0;
-    double at = -1.0; ///< process time of a time-series quantity [s] (a point of a measured curve); < 0: none
+    double at =
+        -1.0; ///< process time of a time-series quantity [s] (a point of a measured curve); < 0: none
 };
 /// A run result a calibration can fit: its name in [[calibration.targets]], its dimension, the
 /// key in the run's summary.json and that key's unit (value in summary = SI / si_per_unit).
@@ -49,14 +50,15 @@ const std::vector<CalibrationQuantity>& calibration_quantities();
 std::string calibration_target_name(const CalibrationTarget& t);
 
 /// A list default in io/config_keys.def: DRYDEM_LIST(6.5e-6, 7.58e-6) is {6.5e-6, 7.58e-6}.
-#define DRYDEM_LIST(...) {__VA_ARGS__}
+#define DRYDEM_LIST(...)                                                                           \
+    { __VA_ARGS__ }
 
 /// The configuration, every value in SI. Its keys are the rows of io/config_keys.def, where each
 /// field's TOML key, default, unit, allowed range and meaning are declared once.
 struct Config {
 #define DRYDEM_SECTION(name, comment)
 #define DRYDEM_NOTE(text)
-#define DRYDEM_KEY(key, Type, member, default_si, default_text, dimension, allowed, doc) \
+#define DRYDEM_KEY(key, Type, member, default_si, default_text, dimension, allowed, doc)           \
     Type member = default_si;
 #include "drydem/io/config_keys.def"
 #undef DRYDEM_KEY

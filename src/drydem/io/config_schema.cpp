@@ -27,7 +27,7 @@ const Schema& schema() {
         };
 #define DRYDEM_SECTION(name, comment) section(#name, comment);
 #define DRYDEM_NOTE(text) note(text);
-#define DRYDEM_KEY(key_, Type, member, default_si, default_text, dimension, allowed, doc)             \
+#define DRYDEM_KEY(key_, Type, member, default_si, default_text, dimension, allowed, doc)          \
     key(Field{key_, &Config::member, Dimension::dimension, allowed, default_text, doc});
 #include "drydem/io/config_keys.def"
 #undef DRYDEM_KEY
@@ -40,7 +40,8 @@ const Schema& schema() {
 
 const Field* find(std::string_view key) {
     const auto& fields = schema().fields;
-    const auto it = std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.key == key; });
+    const auto it =
+        std::find_if(fields.begin(), fields.end(), [&](const Field& f) { return f.key == key; });
     return it == fields.end() ? nullptr : &*it;
 }
 

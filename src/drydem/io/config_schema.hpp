@@ -21,9 +21,9 @@ inline constexpr double max_density = 1e5; ///< [kg/m^3], 4x the densest element
 /// What a key accepts besides its unit: a range in SI, or a list of strings.
 struct Allowed {
     double lo = -inf, hi = inf;
-    bool lo_open = false;         ///< value must be > lo (else >= lo)
-    std::string_view choices;     ///< allowed strings, separated by '|'; empty = any string
-    bool may_be_empty = false;    ///< lists: [] allowed
+    bool lo_open = false;      ///< value must be > lo (else >= lo)
+    std::string_view choices;  ///< allowed strings, separated by '|'; empty = any string
+    bool may_be_empty = false; ///< lists: [] allowed
 
     /// A list that may also be empty ([]).
     [[nodiscard]] constexpr Allowed or_empty() const {
@@ -41,12 +41,12 @@ constexpr Allowed above(double lo, double hi) { return {lo, hi, true, {}, false}
 /// One of the strings in `choices` ("a|b").
 constexpr Allowed one_of(std::string_view choices) { return {-inf, inf, false, choices, false}; }
 
-using Member = std::variant<double Config::*, int Config::*, std::uint64_t Config::*, bool Config::*,
-                            std::string Config::*, std::vector<double> Config::*>;
+using Member = std::variant<double Config::*, int Config::*, std::uint64_t Config::*,
+                            bool Config::*, std::string Config::*, std::vector<double> Config::*>;
 
 /// One key of the configuration.
 struct Field {
-    std::string_view key;  ///< "section.name"
+    std::string_view key; ///< "section.name"
     Member member;
     Dimension dim = Dimension::dimensionless;
     Allowed allowed;
@@ -62,9 +62,9 @@ struct Field {
 /// A row of io/config_keys.def in its order: a section header, a free comment line, or a key.
 struct Row {
     enum Kind { section, note, key } kind;
-    std::string_view text;     ///< section name, or the note's text
-    std::string_view comment;  ///< the section's comment
-    std::size_t field = 0;     ///< index into Schema::fields (key rows)
+    std::string_view text;    ///< section name, or the note's text
+    std::string_view comment; ///< the section's comment
+    std::size_t field = 0;    ///< index into Schema::fields (key rows)
 };
 
 struct Schema {

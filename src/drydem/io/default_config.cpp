@@ -29,8 +29,10 @@ void append_commented(std::string& out, std::string line, std::string_view comme
     }
     for (std::string_view rest = comment;;) {
         const auto nl = rest.find('\n');
-        if (line.size() < kCommentColumn) line.resize(kCommentColumn, ' ');
-        else line += "  ";
+        if (line.size() < kCommentColumn)
+            line.resize(kCommentColumn, ' ');
+        else
+            line += "  ";
         out += fmt::format("{}# {}\n", line, rest.substr(0, nl));
         if (nl == std::string_view::npos) return;
         rest = rest.substr(nl + 1);
@@ -39,10 +41,11 @@ void append_commented(std::string& out, std::string line, std::string_view comme
 }
 
 std::string write_default_toml() {
-    std::string out =
-        "# DryDEM configuration: the paper's 20.1 mg/cm2 case (Lippke et al., Energy Technol. 2022).\n"
-        "# Values are SI numbers or strings with units (\"6.5 um\", \"20.1 mg/cm^2\", \"1.801 Pa*s\", "
-        "\"40 deg\").\n";
+    std::string out = "# DryDEM configuration: the paper's 20.1 mg/cm2 case (Lippke et al., Energy "
+                      "Technol. 2022).\n"
+                      "# Values are SI numbers or strings with units (\"6.5 um\", \"20.1 "
+                      "mg/cm^2\", \"1.801 Pa*s\", "
+                      "\"40 deg\").\n";
     const auto& s = config_schema::schema();
     for (const Row& r : s.rows) {
         if (r.kind == Row::section) {
@@ -62,11 +65,16 @@ std::string write_default_toml() {
 std::string cell(std::string_view text) {
     std::string out;
     for (char ch : text) {
-        if (ch == '\n') out += ' ';
-        else if (ch == '|') out += "\\|";
-        else if (ch == '<') out += "&lt;";
-        else if (ch == '>') out += "&gt;";
-        else out += ch;
+        if (ch == '\n')
+            out += ' ';
+        else if (ch == '|')
+            out += "\\|";
+        else if (ch == '<')
+            out += "&lt;";
+        else if (ch == '>')
+            out += "&gt;";
+        else
+            out += ch;
     }
     return out;
 }
@@ -75,7 +83,8 @@ std::string cell(std::string_view text) {
 std::string allowed_text(const Field& f) {
     const config_schema::Allowed& a = f.allowed;
     const auto interval = [&] {
-        return fmt::format("{}{:g}, {:g}{}", a.lo_open ? "(" : "[", a.lo, a.hi, std::isinf(a.hi) ? ")" : "]");
+        return fmt::format("{}{:g}, {:g}{}", a.lo_open ? "(" : "[", a.lo, a.hi,
+                           std::isinf(a.hi) ? ")" : "]");
     };
     return std::visit(
         [&](auto member) -> std::string {
@@ -84,10 +93,12 @@ std::string allowed_text(const Field& f) {
                 return "true, false";
             } else if constexpr (std::is_same_v<T, std::string>) {
                 std::string list;
-                for (std::string_view ch : f.choices()) list += fmt::format("{}`\"{}\"`", list.empty() ? "" : ", ", ch);
+                for (std::string_view ch : f.choices())
+                    list += fmt::format("{}`\"{}\"`", list.empty() ? "" : ", ", ch);
                 return list.empty() ? "a string" : list;
             } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-                return fmt::format("a list{}, each in {}", a.may_be_empty ? " (may be empty)" : "", interval());
+                return fmt::format("a list{}, each in {}", a.may_be_empty ? " (may be empty)" : "",
+                                   interval());
             } else if constexpr (std::is_same_v<T, double>) {
                 return interval();
             } else {
@@ -107,11 +118,13 @@ std::string_view default_config_toml() {
 std::string config_reference_markdown() {
     std::string out =
         "# Configuration keys\n\n"
-        "<!-- Written by `drydem config doc` from src/drydem/io/config_keys.def; a test compares the two.\n"
+        "<!-- Written by `drydem config doc` from src/drydem/io/config_keys.def; a test compares "
+        "the two.\n"
         "     Regenerate: build/drydem config doc > docs/configuration.md -->\n\n"
         "A configuration is a TOML file; a key it leaves out keeps the default below (the paper's\n"
         "20.1 mg/cm² case, which `drydem config default` prints as a file and `drydem run` runs\n"
-        "without one). Values are SI numbers or strings with units (`\"6.5 um\"`, `\"20.1 mg/cm^2\"`,\n"
+        "without one). Values are SI numbers or strings with units (`\"6.5 um\"`, `\"20.1 "
+        "mg/cm^2\"`,\n"
         "`\"1.801 Pa*s\"`, `\"40 deg\"`, `\"80 degC\"`); *allowed* is in the SI unit of its row.\n"
         "Unknown keys, wrong units and values outside *allowed* are refused, naming the key. The\n"
         "calibration's parameters and targets (`[[calibration.parameters]]`,\n"
@@ -126,7 +139,8 @@ std::string config_reference_markdown() {
             const Field& f = s.fields[r.field];
             const std::string_view unit = si_unit(f.dim);
             out += fmt::format("| `{}` | `{}` | {} | {} | {} |\n", f.key, cell(f.default_text),
-                               unit.empty() ? "" : fmt::format("`{}`", unit), allowed_text(f), cell(f.doc));
+                               unit.empty() ? "" : fmt::format("`{}`", unit), allowed_text(f),
+                               cell(f.doc));
         }
     }
     return out;

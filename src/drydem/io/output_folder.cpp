@@ -33,7 +33,8 @@ bool present(const fs::path& p) {
 
 std::string listing(const std::vector<std::string>& names) {
     std::string out;
-    for (std::size_t k = 0; k < names.size() && k < 5; ++k) out += fmt::format("{}{}", k ? ", " : "", names[k]);
+    for (std::size_t k = 0; k < names.size() && k < 5; ++k)
+        out += fmt::format("{}{}", k ? ", " : "", names[k]);
     if (names.size() > 5) out += fmt::format(" and {} more", names.size() - 5);
     return out;
 }
@@ -45,11 +46,12 @@ const OutputKind& run_output() {
     // has the first two as well) is not a run's.
     static const OutputKind k{
         "run",
-        {"config.toml", "log.txt", "summary.json", "timeseries.csv", "initial.csv", "final.csv", "snapshots",
-         "checkpoint", "analysis", "plots", "coupling.json"},
+        {"config.toml", "log.txt", "summary.json", "timeseries.csv", "initial.csv", "final.csv",
+         "snapshots", "checkpoint", "analysis", "plots", "coupling.json"},
         true,
         [](const fs::path& d) {
-            return present(d / "log.txt") && (present(d / "config.toml") || present(d / "coupling.json")) &&
+            return present(d / "log.txt") &&
+                   (present(d / "config.toml") || present(d / "coupling.json")) &&
                    !present(d / "runs");
         },
         "continue that run with `drydem run --resume {dir}`, "};
@@ -68,19 +70,25 @@ const OutputKind& study_output() {
 }
 
 const OutputKind& dryer_output() {
-    static const OutputKind k{"dryer model run", {"dryer.json", "dryer.csv", "plots"}, false,
-                              [](const fs::path& d) { return present(d / "dryer.json") || present(d / "dryer.csv"); },
-                              ""};
+    static const OutputKind k{
+        "dryer model run",
+        {"dryer.json", "dryer.csv", "plots"},
+        false,
+        [](const fs::path& d) { return present(d / "dryer.json") || present(d / "dryer.csv"); },
+        ""};
     return k;
 }
 
 const OutputKind& analysis_output() {
     static const OutputKind k{
         "analysis",
-        {"analysis.json", "profiles.csv", "transport_convergence.csv", "binder_profile.csv", "psd_chord.csv",
-         "psd_local_thickness.csv", "structure.raw", "structure.json", "structure.mhd", "structure.tif", "plots"},
+        {"analysis.json", "profiles.csv", "transport_convergence.csv", "binder_profile.csv",
+         "psd_chord.csv", "psd_local_thickness.csv", "structure.raw", "structure.json",
+         "structure.mhd", "structure.tif", "plots"},
         false,
-        [](const fs::path& d) { return present(d / "analysis.json") || present(d / "profiles.csv"); },
+        [](const fs::path& d) {
+            return present(d / "analysis.json") || present(d / "profiles.csv");
+        },
         ""};
     return k;
 }
@@ -90,7 +98,9 @@ void prepare_output_folder(const fs::path& dir, const OutputKind& kind, bool ove
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(fmt::format("output folder {}: exists and is not a folder", dir.string()));
     fs::create_directories(dir, ec);
-    if (ec) throw InputError(fmt::format("output folder {}: cannot create it: {}", dir.string(), ec.message()));
+    if (ec)
+        throw InputError(
+            fmt::format("output folder {}: cannot create it: {}", dir.string(), ec.message()));
     std::vector<std::string> ours, foreign;
     for (const auto& e : fs::directory_iterator(dir)) {
         const std::string name = e.path().filename().string();
@@ -102,21 +112,25 @@ void prepare_output_folder(const fs::path& dir, const OutputKind& kind, bool ove
     std::sort(ours.begin(), ours.end());
     std::sort(foreign.begin(), foreign.end());
     if (!kind.holds(dir))
-        throw InputError(fmt::format(
-            "output folder {} is not empty ({}) and holds no DryDEM {}; choose a new or empty folder "
-            "with -o (it is not cleared, not even with --overwrite)",
-            dir.string(), listing(foreign.empty() ? ours : foreign), kind.noun));
+        throw InputError(fmt::format("output folder {} is not empty ({}) and holds no DryDEM {}; "
+                                     "choose a new or empty folder "
+                                     "with -o (it is not cleared, not even with --overwrite)",
+                                     dir.string(), listing(foreign.empty() ? ours : foreign),
+                                     kind.noun));
     if (!overwrite)
         throw InputError(fmt::format(
-            "output folder {} holds a previous {} ({}); choose another folder with -o, {}or replace its "
+            "output folder {} holds a previous {} ({}); choose another folder with -o, {}or "
+            "replace its "
             "outputs with --overwrite",
-            dir.string(), kind.noun, listing(ours), fmt::format(fmt::runtime(kind.resume_hint), fmt::arg("dir", dir.string()))));
+            dir.string(), kind.noun, listing(ours),
+            fmt::format(fmt::runtime(kind.resume_hint), fmt::arg("dir", dir.string()))));
     // --overwrite: remove what the old output was made of (old frames would mix with the new
     // ones); the user's own files stay.
     for (const std::string& name : ours) {
         fs::remove_all(dir / name, ec);
         if (ec)
-            throw InputError(fmt::format("--overwrite: cannot remove {}: {}", (dir / name).string(), ec.message()));
+            throw InputError(fmt::format("--overwrite: cannot remove {}: {}", (dir / name).string(),
+                                         ec.message()));
     }
 }
 
@@ -125,20 +139,23 @@ OutputLock::OutputLock(const fs::path& dir) {
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
         throw InputError(fmt::format("output folder {}: exists and is not a folder", dir.string()));
     fs::create_directories(dir, ec);
-    if (ec) throw InputError(fmt::format("output folder {}: cannot create it: {}", dir.string(), ec.message()));
+    if (ec)
+        throw InputError(
+            fmt::format("output folder {}: cannot create it: {}", dir.string(), ec.message()));
     const fs::path file = dir / output_lock_name;
     fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0)
-        throw InputError(fmt::format("output folder {}: cannot create the lock file {}: {}", dir.string(),
-                                     file.string(), std::strerror(errno)));
+        throw InputError(fmt::format("output folder {}: cannot create the lock file {}: {}",
+                                     dir.string(), file.string(), std::strerror(errno)));
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
         std::string holder;
         std::ifstream(file) >> holder;
         ::close(fd_);
         fd_ = -1;
-        throw InputError(fmt::format("output folder {} is in use by another drydem run{}; two runs cannot "
-                                     "write into one folder (choose another -o)",
-                                     dir.string(), holder.empty() ? "" : fmt::format(" (process {})", holder)));
+        throw InputError(
+            fmt::format("output folder {} is in use by another drydem run{}; two runs cannot "
+                        "write into one folder (choose another -o)",
+                        dir.string(), holder.empty() ? "" : fmt::format(" (process {})", holder)));
     }
     // Who holds it, for the message above; the lock itself is the flock, not this text.
     const std::string pid = fmt::format("{}\n", ::getpid());

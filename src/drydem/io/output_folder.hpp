@@ -12,11 +12,12 @@ namespace drydem {
 
 /// What one command writes into its output folder, and how a folder it wrote is recognised.
 struct OutputKind {
-    std::string noun;               ///< "run", "study", "dryer model run", "analysis"
-    std::vector<std::string> names; ///< the entries it writes (README "Outputs"); --overwrite removes these
-    bool numbered_iterations = false;   ///< also iter_N folders (a coupled run, paper Sec. 8)
+    std::string noun; ///< "run", "study", "dryer model run", "analysis"
+    std::vector<std::string>
+        names; ///< the entries it writes (README "Outputs"); --overwrite removes these
+    bool numbered_iterations = false; ///< also iter_N folders (a coupled run, paper Sec. 8)
     bool (*holds)(const std::filesystem::path& dir) = nullptr; ///< the folder holds such an output
-    std::string resume_hint;        ///< how to continue one, or empty
+    std::string resume_hint;                                   ///< how to continue one, or empty
 };
 
 /// The kinds: `drydem run` (also --couple-dryer), `drydem study`, `drydem dryer`, `drydem analyze`.
@@ -31,7 +32,8 @@ struct OutputKind {
 /// output's entries (kind.names, an atomic write's leftover .tmp, iter_N of a coupled run) and
 /// nothing else; any other non-empty folder is refused even with `overwrite` (it is not ours to
 /// clear). The lock file (OutputLock) and a study's console capture do not count as content.
-void prepare_output_folder(const std::filesystem::path& dir, const OutputKind& kind, bool overwrite);
+void prepare_output_folder(const std::filesystem::path& dir, const OutputKind& kind,
+                           bool overwrite);
 
 /// An exclusive lock on `dir` (created when missing) for the lifetime of the object: `dir/.drydem.lock`, locked with
 /// flock(2), so the kernel releases it when the process ends in any way (SIGKILL included) and a

@@ -162,7 +162,10 @@ void read_data(LineReader& in, ParticleFile& out) {
     std::string line;
     bool have_line = false;
     while (in.next(line)) {
-        if (is_section(line)) { have_line = true; break; }
+        if (is_section(line)) {
+            have_line = true;
+            break;
+        }
         const auto w = words(line);
         if (w.empty()) continue;
         if (w.size() == 2 && w[1] == "atoms") {
@@ -172,7 +175,8 @@ void read_data(LineReader& in, ParticleFile& out) {
         } else if (w.size() == 4 && (w[2] == "xlo" || w[2] == "ylo")) {
             const double lo = number(in, w[0], w[2]), hi = number(in, w[1], w[3]);
             if (!(hi > lo) || !std::isfinite(hi - lo))
-                in.fail(fmt::format("box bounds {} {} are inverted or empty (need lo < hi)", lo, hi));
+                in.fail(
+                    fmt::format("box bounds {} {} are inverted or empty (need lo < hi)", lo, hi));
             (w[2] == "xlo" ? out.xlo : out.ylo) = lo;
             (w[2] == "xlo" ? out.lx : out.ly) = hi - lo;
         } else if (w.size() == 6 && w[3] == "xy") {
@@ -198,7 +202,10 @@ void read_data(LineReader& in, ParticleFile& out) {
         atoms_seen = atoms_seen || atoms;
         have_line = false;
         while (in.next(line)) {
-            if (is_section(line)) { have_line = true; break; }
+            if (is_section(line)) {
+                have_line = true;
+                break;
+            }
             if (!atoms) continue;
             const auto w = words(line);
             if (w.empty()) continue;
@@ -259,9 +266,11 @@ std::vector<DumpFrame> dump_frames(LineReader& in, std::string first) {
                     cur.box[2 * k] = number(in, w[0], "lower bound");
                     cur.box[2 * k + 1] = number(in, w[1], "upper bound");
                     // Inverted bounds give a negative volume (density < 0, porosity > 1 downstream).
-                    if (!(cur.box[2 * k + 1] > cur.box[2 * k]) || !std::isfinite(cur.box[2 * k + 1] - cur.box[2 * k]))
-                        in.fail(fmt::format("box bounds {} {} in {} are inverted or empty (need lo < hi)",
-                                            cur.box[2 * k], cur.box[2 * k + 1], "xy"[k]));
+                    if (!(cur.box[2 * k + 1] > cur.box[2 * k]) ||
+                        !std::isfinite(cur.box[2 * k + 1] - cur.box[2 * k]))
+                        in.fail(fmt::format(
+                            "box bounds {} {} in {} are inverted or empty (need lo < hi)",
+                            cur.box[2 * k], cur.box[2 * k + 1], "xy"[k]));
                 }
             }
             cur.have_box = true;
@@ -325,8 +334,10 @@ void read_dump_frame(LineReader& in, const DumpFrame& last, ParticleFile& out) {
         const auto num = [&](int c, std::string_view what) { return number(in, w[c], what); };
         const double r = c_r >= 0 ? num(c_r, "radius") : 0.5 * num(c_d, "diameter");
         double rho = kNaN;
-        if (c_rho >= 0) rho = num(c_rho, "density");
-        else if (c_m >= 0) rho = num(c_m, "mass") / sphere_volume(r);
+        if (c_rho >= 0)
+            rho = num(c_rho, "density");
+        else if (c_m >= 0)
+            rho = num(c_m, "mass") / sphere_volume(r);
         Vec3 x{num(c_x[0], "x"), num(c_x[1], "y"), num(c_x[2], "z")};
         if (scaled[0]) x.x = last.box[0] + x.x * (last.box[1] - last.box[0]);
         if (scaled[1]) x.y = last.box[2] + x.y * (last.box[3] - last.box[2]);
@@ -346,12 +357,15 @@ void read_dump(LineReader& in, std::string first, ParticleFile& out) {
 }
 
 /// "particle 7 (line 9)"
-std::string who(const ParticleRecord& r) { return fmt::format("particle {} (line {})", r.id, r.line); }
+std::string who(const ParticleRecord& r) {
+    return fmt::format("particle {} (line {})", r.id, r.line);
+}
 
 /// The first pair of spheres that coincide or overlap by more than the smaller radius, i.e. the
 /// smaller one's centre lies inside the larger one: found from the larger one by searching its
 /// radius on a hashed cell grid of the median diameter (periodic in x and y).
-std::optional<std::pair<std::size_t, std::size_t>> gross_overlap(const ParticleFile& f, double lx, double ly) {
+std::optional<std::pair<std::size_t, std::size_t>> gross_overlap(const ParticleFile& f, double lx,
+                                                                 double ly) {
     const auto& p = f.particles;
     std::vector<double> radii(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) radii[i] = p[i].radius;
@@ -368,7 +382,8 @@ std::optional<std::pair<std::size_t, std::size_t>> gross_overlap(const ParticleF
         return std::array<long, 3>{ix, iy, iz};
     };
     auto key = [](long ix, long iy, long iz) {
-        return (std::uint64_t(iz + (1L << 22)) << 40) | (std::uint64_t(iy) << 20) | std::uint64_t(ix);
+        return (std::uint64_t(iz + (1L << 22)) << 40) | (std::uint64_t(iy) << 20) |
+               std::uint64_t(ix);
     };
     std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -380,9 +395,12 @@ std::optional<std::pair<std::size_t, std::size_t>> gross_overlap(const ParticleF
         const double dx = periodic(p[j].position.x - p[i].position.x, lx);
         const double dy = periodic(p[j].position.y - p[i].position.y, ly);
         const double dz = p[j].position.z - p[i].position.z;
-        return j != i && std::sqrt(dx * dx + dy * dy + dz * dz) < std::max(p[i].radius, p[j].radius);
+        return j != i &&
+               std::sqrt(dx * dx + dy * dy + dz * dz) < std::max(p[i].radius, p[j].radius);
     };
-    auto ordered = [](std::size_t i, std::size_t j) { return std::pair{std::min(i, j), std::max(i, j)}; };
+    auto ordered = [](std::size_t i, std::size_t j) {
+        return std::pair{std::min(i, j), std::max(i, j)};
+    };
     for (std::size_t i = 0; i < p.size(); ++i) {
         const auto c = cell_of(p[i].position);
         const long k = long(std::min(std::ceil(p[i].radius / h), max_layer));
@@ -396,7 +414,8 @@ std::optional<std::pair<std::size_t, std::size_t>> gross_overlap(const ParticleF
         for (long dx = 0; dx < wx; ++dx)
             for (long dy = 0; dy < wy; ++dy)
                 for (long iz = c[2] - k; iz <= c[2] + k; ++iz) {
-                    const long ix = ((c[0] - k + dx) % nx + nx) % nx, iy = ((c[1] - k + dy) % ny + ny) % ny;
+                    const long ix = ((c[0] - k + dx) % nx + nx) % nx,
+                               iy = ((c[1] - k + dy) % ny + ny) % ny;
                     const auto it = cells.find(key(ix, iy, iz));
                     if (it == cells.end()) continue;
                     for (std::size_t j : it->second)
@@ -436,8 +455,8 @@ void check_ids(const ParticleFile& out, const fs::path& file) {
                    [](const ParticleRecord& r) { return r.id; });
     std::sort(ids.begin(), ids.end());
     if (const auto dup = std::adjacent_find(ids.begin(), ids.end()); dup != ids.end())
-        throw InputError(fmt::format("{}: particle id {} occurs more than once", file.string(),
-                                     *dup));
+        throw InputError(
+            fmt::format("{}: particle id {} occurs more than once", file.string(), *dup));
 }
 
 } // namespace
@@ -447,12 +466,16 @@ ParticleFile read_particles(const fs::path& file) {
     LineReader in(file);
     ParticleFile out;
     std::string first;
-    while (in.next(first) && trim(first).empty()) {}
+    while (in.next(first) && trim(first).empty()) {
+    }
     const auto head = trim(first);
     if (head.empty()) in.fail("empty particle file");
-    if (head.starts_with("ITEM:")) read_dump(in, first, out);
-    else if (looks_like_csv_header(head)) read_csv(in, first, out);
-    else read_data(in, out); // line 1 of a data file is a free title
+    if (head.starts_with("ITEM:"))
+        read_dump(in, first, out);
+    else if (looks_like_csv_header(head))
+        read_csv(in, first, out);
+    else
+        read_data(in, out); // line 1 of a data file is a free title
     check_ids(out, file);
     return out;
 }
@@ -461,7 +484,8 @@ void for_each_dump_frame(const fs::path& file, const std::function<void(DumpSnap
     refuse_gzip(file);
     LineReader in(file);
     std::string first;
-    while (in.next(first) && trim(first).empty()) {}
+    while (in.next(first) && trim(first).empty()) {
+    }
     if (!trim(first).starts_with("ITEM:")) in.fail("not a LAMMPS text dump (no ITEM: line)");
     for (const DumpFrame& f : dump_frames(in, first)) {
         DumpSnapshot d;
@@ -475,51 +499,57 @@ void for_each_dump_frame(const fs::path& file, const std::function<void(DumpSnap
 void check_particle_geometry(const ParticleFile& f, double lx, double ly, const fs::path& name) {
     const std::string file = name.string();
     if (!(lx > 0.0 && ly > 0.0 && std::isfinite(lx) && std::isfinite(ly)))
-        throw InputError(fmt::format("{}: the periodic box {:g} x {:g} m is not finite and positive", file, lx, ly));
+        throw InputError(fmt::format(
+            "{}: the periodic box {:g} x {:g} m is not finite and positive", file, lx, ly));
     const double xlo = f.xlo.value_or(0.0), ylo = f.ylo.value_or(0.0);
     for (const ParticleRecord& r : f.particles) {
         if (2.0 * r.radius > 0.5 * std::min(lx, ly))
             throw InputError(fmt::format(
-                "{}: {} has radius {:.4g} um, too large for the {:.4g} x {:.4g} um periodic box (its diameter "
+                "{}: {} has radius {:.4g} um, too large for the {:.4g} x {:.4g} um periodic box "
+                "(its diameter "
                 "must be below half the smaller side); wrong units in the file or the wrong box?",
                 file, who(r), r.radius * 1e6, lx * 1e6, ly * 1e6));
         const double out_x = std::max(xlo - r.position.x, r.position.x - (xlo + lx)) / lx;
         const double out_y = std::max(ylo - r.position.y, r.position.y - (ylo + ly)) / ly;
         if (out_x > 10.0 || out_y > 10.0)
-            throw InputError(fmt::format(
-                "{}: {} at x = {:.4g} um, y = {:.4g} um lies more than 10 box lengths outside the {:.4g} x {:.4g} um "
-                "box; wrong units in the file or the wrong box?",
-                file, who(r), r.position.x * 1e6, r.position.y * 1e6, lx * 1e6, ly * 1e6));
+            throw InputError(fmt::format("{}: {} at x = {:.4g} um, y = {:.4g} um lies more than 10 "
+                                         "box lengths outside the {:.4g} x {:.4g} um "
+                                         "box; wrong units in the file or the wrong box?",
+                                         file, who(r), r.position.x * 1e6, r.position.y * 1e6,
+                                         lx * 1e6, ly * 1e6));
         // A wet electrode film is below 1 mm; 1 cm above the substrate is a typo ("1.8" for 1.8e-5).
         if (r.position.z - r.radius > 0.01)
-            throw InputError(fmt::format("{}: {} at z = {:.4g} m lies more than 1 cm above the substrate; no film "
-                                         "is that thick (wrong units or a damaged number?)",
-                                         file, who(r), r.position.z));
+            throw InputError(fmt::format(
+                "{}: {} at z = {:.4g} m lies more than 1 cm above the substrate; no film "
+                "is that thick (wrong units or a damaged number?)",
+                file, who(r), r.position.z));
         if (r.position.z < 0.0)
-            throw InputError(fmt::format("{}: {} has its centre below the substrate (z = {:.4g} um < 0)", file,
-                                         who(r), r.position.z * 1e6));
+            throw InputError(
+                fmt::format("{}: {} has its centre below the substrate (z = {:.4g} um < 0)", file,
+                            who(r), r.position.z * 1e6));
         // Soft CB agglomerates under the NCM of a 20.1 mg/cm² film end up to 81 % of their radius
         // in the substrate (our own final.csv, z/r = 0.19): deep, but a packing; 90 % is not.
         if (r.position.z < 0.1 * r.radius)
-            throw InputError(fmt::format(
-                "{}: {} (radius {:.4g} um, z = {:.4g} um) is sunk into the substrate by more than 90 % of its radius",
-                file, who(r), r.radius * 1e6, r.position.z * 1e6));
+            throw InputError(fmt::format("{}: {} (radius {:.4g} um, z = {:.4g} um) is sunk into "
+                                         "the substrate by more than 90 % of its radius",
+                                         file, who(r), r.radius * 1e6, r.position.z * 1e6));
     }
     if (const auto pair = gross_overlap(f, lx, ly)) {
         const ParticleRecord &a = f.particles[pair->first], &b = f.particles[pair->second];
         const double dist = std::sqrt(std::pow(std::remainder(b.position.x - a.position.x, lx), 2) +
                                       std::pow(std::remainder(b.position.y - a.position.y, ly), 2) +
                                       std::pow(b.position.z - a.position.z, 2));
-        throw InputError(fmt::format(
-            "{}: {} and {} {} (centres {:.4g} um apart, radii {:.4g} and {:.4g} um): an overlap larger than the "
-            "smaller radius is no packing",
-            file, who(a), who(b), dist < 1e-6 * std::min(a.radius, b.radius) ? "coincide" : "overlap grossly",
-            dist * 1e6, a.radius * 1e6, b.radius * 1e6));
+        throw InputError(
+            fmt::format("{}: {} and {} {} (centres {:.4g} um apart, radii {:.4g} and {:.4g} um): "
+                        "an overlap larger than the "
+                        "smaller radius is no packing",
+                        file, who(a), who(b),
+                        dist < 1e-6 * std::min(a.radius, b.radius) ? "coincide" : "overlap grossly",
+                        dist * 1e6, a.radius * 1e6, b.radius * 1e6));
     }
 }
 
-void write_file_atomically(const fs::path& file,
-                           const std::function<void(std::ostream&)>& write) {
+void write_file_atomically(const fs::path& file, const std::function<void(std::ostream&)>& write) {
     auto tmp = file;
     tmp += ".tmp";
     {
@@ -535,8 +565,9 @@ void write_file_atomically(const fs::path& file,
     }
     std::error_code ec;
     fs::rename(tmp, file, ec);
-    if (ec) throw RunError(fmt::format("cannot rename {} to {}: {}", tmp.string(),
-                                       file.string(), ec.message()));
+    if (ec)
+        throw RunError(
+            fmt::format("cannot rename {} to {}: {}", tmp.string(), file.string(), ec.message()));
 }
 
 void write_particles_csv(const fs::path& file, const ParticleStore& p) {

@@ -44,14 +44,15 @@ struct ParticleFile {
 
 /// One frame of a LAMMPS text dump.
 struct DumpSnapshot {
-    std::int64_t step = -1;  ///< ITEM: TIMESTEP
+    std::int64_t step = -1; ///< ITEM: TIMESTEP
     ParticleFile particles;
 };
 
 /// Hands every complete frame of a LAMMPS text dump (a run's snapshots/dump.lammpstrj) to `use`,
 /// in file order, one at a time (a long run's dump need not fit in memory), each read and checked
 /// as read_particles() reads the last one.
-void for_each_dump_frame(const std::filesystem::path& file, const std::function<void(DumpSnapshot&&)>& use);
+void for_each_dump_frame(const std::filesystem::path& file,
+                         const std::function<void(DumpSnapshot&&)>& use);
 
 /// Refuses a particle file no film can be: a box that is not finite and positive, a sphere wider
 /// than half the periodic box, a centre below the substrate (z < 0) or a sphere sunk into it by

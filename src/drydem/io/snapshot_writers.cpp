@@ -23,12 +23,23 @@ std::string xml_escape(std::string_view s) {
     std::string out;
     for (const char c : s) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
-        default: out += c;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '\'':
+            out += "&apos;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -67,10 +78,11 @@ std::optional<std::string> attribute(std::string_view tag, std::string_view name
 // of full precision; frames are for looking at, final.csv and checkpoints carry exact values.
 // `put(out, i)` writes the components of tuple i.
 template <class Put>
-void vtp_array(Out out, std::string_view type, std::string_view name, int components,
-               std::size_t n, Put put) {
-    fmt::format_to(out, "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
-                        "format=\"ascii\">\n",
+void vtp_array(Out out, std::string_view type, std::string_view name, int components, std::size_t n,
+               Put put) {
+    fmt::format_to(out,
+                   "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                   "format=\"ascii\">\n",
                    type, name, components);
     for (std::size_t i = 0; i < n; ++i) {
         put(out, i);
@@ -103,16 +115,18 @@ void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, do
     // TimeValue is the name ParaView looks for; process time is what the user compares with the
     // dryer, the scaled simulation time is kept next to it.
     using Field = std::pair<std::string_view, double>;
-    for (const auto& [name, value] : {Field{"TimeValue", process_time},
-                                      Field{"process_time_s", process_time},
-                                      Field{"sim_time_s", sim_time}})
-        fmt::format_to(out, "      <DataArray type=\"Float64\" Name=\"{}\" NumberOfTuples=\"1\" "
-                            "format=\"ascii\">{}</DataArray>\n",
+    for (const auto& [name, value] :
+         {Field{"TimeValue", process_time}, Field{"process_time_s", process_time},
+          Field{"sim_time_s", sim_time}})
+        fmt::format_to(out,
+                       "      <DataArray type=\"Float64\" Name=\"{}\" NumberOfTuples=\"1\" "
+                       "format=\"ascii\">{}</DataArray>\n",
                        name, value);
-    fmt::format_to(out, "    </FieldData>\n"
-                        "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" "
-                        "NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-                        "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n",
+    fmt::format_to(out,
+                   "    </FieldData>\n"
+                   "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" "
+                   "NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+                   "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n",
                    n);
     vtp_array(out, "UInt32", "id", 1, n, [&](Out o, auto i) { fmt::format_to(o, "{}", p.id[i]); });
     vtp_array(out, "Int32", "type", 1, n,
@@ -140,33 +154,34 @@ void write_vtp(const fs::path& file, const ParticleStore& p, double sim_time, do
 void write_level_vtp(const fs::path& file, const Box& box, double level, double process_time) {
     fmt::memory_buffer buf;
     const Out out(buf);
-    fmt::format_to(out,
-                   "<?xml version=\"1.0\"?>\n"
-                   "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-                   "header_type=\"UInt64\">\n"
-                   "  <PolyData>\n"
-                   "    <FieldData>\n"
-                   "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
-                   "format=\"ascii\">{0}</DataArray>\n"
-                   "      <DataArray type=\"Float64\" Name=\"liquid_level_um\" NumberOfTuples=\"1\" "
-                   "format=\"ascii\">{1}</DataArray>\n"
-                   "    </FieldData>\n"
-                   "    <Piece NumberOfPoints=\"4\" NumberOfVerts=\"0\" NumberOfLines=\"0\" "
-                   "NumberOfStrips=\"0\" NumberOfPolys=\"1\">\n"
-                   "      <Points>\n"
-                   "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" "
-                   "format=\"ascii\">0 0 {2:.9g} {3:.9g} 0 {2:.9g} {3:.9g} {4:.9g} {2:.9g} 0 {4:.9g} {2:.9g}"
-                   "</DataArray>\n"
-                   "      </Points>\n"
-                   "      <Polys>\n"
-                   "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3"
-                   "</DataArray>\n"
-                   "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
-                   "      </Polys>\n"
-                   "    </Piece>\n"
-                   "  </PolyData>\n"
-                   "</VTKFile>\n",
-                   process_time, level * 1e6, level, box.lx, box.ly);
+    fmt::format_to(
+        out,
+        "<?xml version=\"1.0\"?>\n"
+        "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        "header_type=\"UInt64\">\n"
+        "  <PolyData>\n"
+        "    <FieldData>\n"
+        "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+        "format=\"ascii\">{0}</DataArray>\n"
+        "      <DataArray type=\"Float64\" Name=\"liquid_level_um\" NumberOfTuples=\"1\" "
+        "format=\"ascii\">{1}</DataArray>\n"
+        "    </FieldData>\n"
+        "    <Piece NumberOfPoints=\"4\" NumberOfVerts=\"0\" NumberOfLines=\"0\" "
+        "NumberOfStrips=\"0\" NumberOfPolys=\"1\">\n"
+        "      <Points>\n"
+        "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" "
+        "format=\"ascii\">0 0 {2:.9g} {3:.9g} 0 {2:.9g} {3:.9g} {4:.9g} {2:.9g} 0 {4:.9g} {2:.9g}"
+        "</DataArray>\n"
+        "      </Points>\n"
+        "      <Polys>\n"
+        "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3"
+        "</DataArray>\n"
+        "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
+        "      </Polys>\n"
+        "    </Piece>\n"
+        "  </PolyData>\n"
+        "</VTKFile>\n",
+        process_time, level * 1e6, level, box.lx, box.ly);
     write_file_atomically(file, [&](std::ostream& os) {
         os.write(buf.data(), static_cast<std::streamsize>(buf.size()));
     });
@@ -204,15 +219,15 @@ std::size_t PvdWriter::load_existing() {
         const auto f = attribute(line, "file");
         double time = 0.0;
         if (!t || !f || std::from_chars(t->data(), t->data() + t->size(), time).ec != std::errc{})
-            throw InputError(fmt::format("{}: cannot read the DataSet entry '{}'", file_.string(),
-                                         line));
+            throw InputError(
+                fmt::format("{}: cannot read the DataSet entry '{}'", file_.string(), line));
         entries_.push_back({time, *f});
     }
     return entries_.size();
 }
 
-void append_lammps_dump(std::ostream& os, const ParticleStore& p, const Box& box,
-                        std::int64_t step, double z_top) {
+void append_lammps_dump(std::ostream& os, const ParticleStore& p, const Box& box, std::int64_t step,
+                        double z_top) {
     // Sorted by id so frames diff cleanly and tools that index by line see a stable order.
     std::vector<std::uint32_t> order(p.size());
     std::iota(order.begin(), order.end(), 0u);

@@ -73,8 +73,8 @@ struct Prefix {
     int pow10;
 };
 const std::array kPrefixes{Prefix{"f", -15}, Prefix{"p", -12}, Prefix{"n", -9}, Prefix{"u", -6},
-                           Prefix{"µ", -6},  Prefix{"μ", -6},   Prefix{"m", -3}, Prefix{"c", -2},
-                           Prefix{"k", 3},   Prefix{"M", 6},    Prefix{"G", 9},  Prefix{"T", 12}};
+                           Prefix{"µ", -6},  Prefix{"μ", -6},  Prefix{"m", -3}, Prefix{"c", -2},
+                           Prefix{"k", 3},   Prefix{"M", 6},   Prefix{"G", 9},  Prefix{"T", 12}};
 
 constexpr std::array<Dims, 21> kExpected{{
     kNone,                // dimensionless
@@ -99,44 +99,41 @@ constexpr std::array<Dims, 21> kExpected{{
     {-3, -1, 3, 0, 0, 2}, // electrical conductivity
     {2, 0, -1, 0, 0},     // diffusivity
 }};
-constexpr std::array<std::string_view, 21> kNames{
-    "dimensionless",  "length",          "time",          "mass",
-    "velocity",       "acceleration",    "density",       "pressure",
-    "viscosity",      "surface tension", "energy",        "force",
-    "areal density",  "temperature",     "angle",         "frequency",
-    "heat transfer coefficient",         "specific heat capacity", "electric potential",
-    "electrical conductivity",           "diffusivity"};
+constexpr std::array<std::string_view, 21> kNames{"dimensionless",
+                                                  "length",
+                                                  "time",
+                                                  "mass",
+                                                  "velocity",
+                                                  "acceleration",
+                                                  "density",
+                                                  "pressure",
+                                                  "viscosity",
+                                                  "surface tension",
+                                                  "energy",
+                                                  "force",
+                                                  "areal density",
+                                                  "temperature",
+                                                  "angle",
+                                                  "frequency",
+                                                  "heat transfer coefficient",
+                                                  "specific heat capacity",
+                                                  "electric potential",
+                                                  "electrical conductivity",
+                                                  "diffusivity"};
 // The SI unit of each dimension, as parse_quantity reads it ("" for plain numbers).
 constexpr std::array<std::string_view, 21> kSiUnits{
-    "",     "m",     "s",      "kg",     "m/s",    "m/s^2", "kg/m^3",         "Pa",            "Pa*s", "N/m",
-    "J",    "N",     "kg/m^2", "K",      "rad",    "Hz",    "W/(m^2*K)",      "J/(kg*K)",      "V",
-    "S/m",  "m^2/s"};
+    "",  "m",      "s", "kg",  "m/s", "m/s^2",     "kg/m^3",   "Pa", "Pa*s", "N/m",  "J",
+    "N", "kg/m^2", "K", "rad", "Hz",  "W/(m^2*K)", "J/(kg*K)", "V",  "S/m",  "m^2/s"};
 // Unit used in the "e.g." part of error messages, with its decimal exponent (0 = SI already).
 struct Example {
     std::string_view unit;
     int pow10;
 };
-constexpr std::array<Example, 21> kExamples{{{"", 0},
-                                             {"um", -6},
-                                             {"s", 0},
-                                             {"mg", -6},
-                                             {"um/s", -6},
-                                             {"m/s^2", 0},
-                                             {"g/cm^3", 3},
-                                             {"MPa", 6},
-                                             {"mPa*s", -3},
-                                             {"mN/m", -3},
-                                             {"J", 0},
-                                             {"nN", -9},
-                                             {"mg/cm^2", -2},
-                                             {"K", 0},
-                                             {"deg", 0},
-                                             {"Hz", 0},
-                                             {"W/(m^2*K)", 0},
-                                             {"J/(kg*K)", 0},
-                                             {"mV", -3},
-                                             {"S/m", 0},
-                                             {"m^2/s", 0}}};
+constexpr std::array<Example, 21> kExamples{
+    {{"", 0},         {"um", -6}, {"s", 0},      {"mg", -6},   {"um/s", -6},     {"m/s^2", 0},
+     {"g/cm^3", 3},   {"MPa", 6}, {"mPa*s", -3}, {"mN/m", -3}, {"J", 0},         {"nN", -9},
+     {"mg/cm^2", -2}, {"K", 0},   {"deg", 0},    {"Hz", 0},    {"W/(m^2*K)", 0}, {"J/(kg*K)", 0},
+     {"mV", -3},      {"S/m", 0}, {"m^2/s", 0}}};
 
 std::size_t index(Dimension d) { return static_cast<std::size_t>(d); }
 
@@ -157,7 +154,8 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 /// A value as error messages show it: a 60,000-character value is cut to its two ends.
 std::string shorten(std::string_view s) {
     if (s.size() <= 80) return std::string(s);
-    return fmt::format("{}...{} ({} characters)", s.substr(0, 40), s.substr(s.size() - 20), s.size());
+    return fmt::format("{}...{} ({} characters)", s.substr(0, 40), s.substr(s.size() - 20),
+                       s.size());
 }
 
 // Raises a unit to an integer power exactly (num and den are small integers or pi).
@@ -219,7 +217,8 @@ public:
     Unit parse() {
         Unit u = expr();
         skip_ws();
-        if (pos_ != s_.size()) throw UnitSyntax(fmt::format("unexpected '{}'", shorten(s_.substr(pos_))));
+        if (pos_ != s_.size())
+            throw UnitSyntax(fmt::format("unexpected '{}'", shorten(s_.substr(pos_))));
         // degC is an offset scale: "80 degC" is fine, "J/degC" or "degC^2" would be meaningless.
         if (u.celsius && (factors_ != 1 || u.dims != K))
             throw UnitSyntax("degC is an offset scale and only allowed alone (\"80 degC\"); use K "
@@ -312,8 +311,14 @@ private:
     }
 
     int exponent() {
-        if (at("²")) { pos_ += std::string_view("²").size(); return 2; }
-        if (at("³")) { pos_ += std::string_view("³").size(); return 3; }
+        if (at("²")) {
+            pos_ += std::string_view("²").size();
+            return 2;
+        }
+        if (at("³")) {
+            pos_ += std::string_view("³").size();
+            return 3;
+        }
         const bool caret = pos_ < s_.size() && s_[pos_] == '^';
         if (caret) ++pos_;
         const auto b = pos_;
@@ -351,10 +356,16 @@ std::optional<Number> scan_number(std::string_view s) {
     }
     const auto b = i;
     bool digits = false;
-    while (i < s.size() && is_digit(s[i])) { ++i; digits = true; }
+    while (i < s.size() && is_digit(s[i])) {
+        ++i;
+        digits = true;
+    }
     if (i < s.size() && s[i] == '.') {
         ++i;
-        while (i < s.size() && is_digit(s[i])) { ++i; digits = true; }
+        while (i < s.size() && is_digit(s[i])) {
+            ++i;
+            digits = true;
+        }
     }
     if (!digits) return std::nullopt;
     n.mantissa += s.substr(b, i - b);
@@ -465,14 +476,13 @@ double parse_quantity(std::string_view text, Dimension expected, std::string_vie
         u.dims = kExpected[index(expected)]; // bare number: already SI
     }
     if (u.dims != kExpected[index(expected)])
-        throw InputError(fmt::format("{}: \"{}\" has unit {} ({}) but {} is expected ({})", where,
-                                     shown, shorten(unit_text), describe(u.dims),
-                                     with_article(dimension_name(expected)),
-                                     example(expected, number)));
+        throw InputError(fmt::format(
+            "{}: \"{}\" has unit {} ({}) but {} is expected ({})", where, shown, shorten(unit_text),
+            describe(u.dims), with_article(dimension_name(expected)), example(expected, number)));
     auto v = to_double(*number, u.pow10);
     if (!v)
-        throw InputError(fmt::format("{}: \"{}\" is out of the range of double precision", where,
-                                     shown));
+        throw InputError(
+            fmt::format("{}: \"{}\" is out of the range of double precision", where, shown));
     if (u.num != 1.0 || u.den != 1.0) *v = *v * u.num / u.den;
     if (u.celsius) *v += 273.15;
     return *v;
@@ -492,8 +502,7 @@ std::string format_quantity(double si, Dimension d) {
     };
     using D = Dimension;
     static const Choice length[]{{"nm", 1e-9}, {"um", 1e-6}, {"mm", 1e-3}, {"m", 1}};
-    static const Choice time[]{{"ps", 1e-12}, {"ns", 1e-9}, {"us", 1e-6}, {"ms", 1e-3},
-                               {"s", 1}};
+    static const Choice time[]{{"ps", 1e-12}, {"ns", 1e-9}, {"us", 1e-6}, {"ms", 1e-3}, {"s", 1}};
     static const Choice mass[]{{"pg", 1e-15}, {"ng", 1e-12}, {"ug", 1e-9},
                                {"mg", 1e-6},  {"g", 1e-3},   {"kg", 1}};
     static const Choice velocity[]{{"nm/s", 1e-9}, {"um/s", 1e-6}, {"mm/s", 1e-3}, {"m/s", 1}};
@@ -505,27 +514,68 @@ std::string format_quantity(double si, Dimension d) {
     static const Choice potential[]{{"mV", 1e-3}, {"V", 1}};
     Choice c{"", 1};
     switch (d) {
-    case D::dimensionless: return fmt::format("{:.6g}", si);
-    case D::length: c = pick(si, length); break;
-    case D::time: c = pick(si, time); break;
-    case D::mass: c = pick(si, mass); break;
-    case D::velocity: c = pick(si, velocity); break;
-    case D::acceleration: c = {"m/s^2", 1}; break;
-    case D::density: c = {"kg/m^3", 1}; break;
-    case D::pressure: c = pick(si, pressure); break;
-    case D::viscosity: c = pick(si, viscosity); break;
-    case D::surface_tension: c = pick(si, tension); break;
-    case D::energy: c = {"J", 1}; break;
-    case D::force: c = pick(si, force); break;
-    case D::areal_density: c = {"mg/cm^2", 1e-2}; break;
-    case D::temperature: c = {"K", 1}; break;
-    case D::angle: c = {"deg", std::numbers::pi / 180.0}; break;
-    case D::frequency: c = pick(si, frequency); break;
-    case D::heat_transfer_coefficient: c = {"W/(m^2*K)", 1}; break;
-    case D::specific_heat: c = {"J/(kg*K)", 1}; break;
-    case D::electric_potential: c = pick(si, potential); break;
-    case D::electrical_conductivity: c = {"S/m", 1}; break;
-    case D::diffusivity: c = {"m^2/s", 1}; break;
+    case D::dimensionless:
+        return fmt::format("{:.6g}", si);
+    case D::length:
+        c = pick(si, length);
+        break;
+    case D::time:
+        c = pick(si, time);
+        break;
+    case D::mass:
+        c = pick(si, mass);
+        break;
+    case D::velocity:
+        c = pick(si, velocity);
+        break;
+    case D::acceleration:
+        c = {"m/s^2", 1};
+        break;
+    case D::density:
+        c = {"kg/m^3", 1};
+        break;
+    case D::pressure:
+        c = pick(si, pressure);
+        break;
+    case D::viscosity:
+        c = pick(si, viscosity);
+        break;
+    case D::surface_tension:
+        c = pick(si, tension);
+        break;
+    case D::energy:
+        c = {"J", 1};
+        break;
+    case D::force:
+        c = pick(si, force);
+        break;
+    case D::areal_density:
+        c = {"mg/cm^2", 1e-2};
+        break;
+    case D::temperature:
+        c = {"K", 1};
+        break;
+    case D::angle:
+        c = {"deg", std::numbers::pi / 180.0};
+        break;
+    case D::frequency:
+        c = pick(si, frequency);
+        break;
+    case D::heat_transfer_coefficient:
+        c = {"W/(m^2*K)", 1};
+        break;
+    case D::specific_heat:
+        c = {"J/(kg*K)", 1};
+        break;
+    case D::electric_potential:
+        c = pick(si, potential);
+        break;
+    case D::electrical_conductivity:
+        c = {"S/m", 1};
+        break;
+    case D::diffusivity:
+        c = {"m^2/s", 1};
+        break;
     }
     return fmt::format("{:.6g} {}", si / c.scale, c.unit);
 }

@@ -79,7 +79,9 @@ public:
         std::vector<PairState> pair_state;
         std::vector<Vec3> x_build;
     };
-    [[nodiscard]] State state() const { return {builds_, offset_, partner_, reach2_, state_, x_build_}; }
+    [[nodiscard]] State state() const {
+        return {builds_, offset_, partner_, reach2_, state_, x_build_};
+    }
     void restore(State s) {
         builds_ = s.builds;
         offset_ = std::move(s.offset);
@@ -155,8 +157,10 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
         const std::uint32_t c = g.cell_of[i];
         const int ix = int(c % g.nx), iy = int((c / g.nx) % g.ny), iz = int(c / (g.nx * g.ny));
         // A stencil wider than the periodic grid visits every column once.
-        const int x0 = 2 * wx + 1 >= g.nx ? 0 : ix - wx, x1 = 2 * wx + 1 >= g.nx ? g.nx - 1 : ix + wx;
-        const int y0 = 2 * wy + 1 >= g.ny ? 0 : iy - wy, y1 = 2 * wy + 1 >= g.ny ? g.ny - 1 : iy + wy;
+        const int x0 = 2 * wx + 1 >= g.nx ? 0 : ix - wx,
+                  x1 = 2 * wx + 1 >= g.nx ? g.nx - 1 : ix + wx;
+        const int y0 = 2 * wy + 1 >= g.ny ? 0 : iy - wy,
+                  y1 = 2 * wy + 1 >= g.ny ? g.ny - 1 : iy + wy;
         const int z0 = std::max(0, iz - wz), z1 = std::min(g.nz - 1, iz + wz);
         for (int kz = z0; kz <= z1; ++kz)
             for (int ky = y0; ky <= y1; ++ky) {

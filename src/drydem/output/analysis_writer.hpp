@@ -11,7 +11,8 @@ namespace drydem {
 
 /// The analysis as JSON (the content of analysis.json); `source` names the snapshot.
 [[nodiscard]] nlohmann::ordered_json analysis_json(const analysis::AnalysisResult& r,
-                                                   const analysis::AnalysisOptions& o, const std::string& source);
+                                                   const analysis::AnalysisOptions& o,
+                                                   const std::string& source);
 
 /// Writes analysis.json, profiles.csv and, when voxelized, psd_chord.csv and psd_local_thickness.csv
 /// into `dir` (atomically each).

@@ -45,38 +45,45 @@ void each_field(State& s, F&& field) {
     field(s.stats.layer_top), field(s.force_rebuild), field(s.rebuilds_since_sort);
     field(s.accel), field(s.alpha); // format 2: the semi-implicit kick's accelerations
 }
-template <class T> struct is_vector : std::false_type {};
-template <class T> struct is_vector<std::vector<T>> : std::true_type {};
+template <class T>
+struct is_vector : std::false_type {};
+template <class T>
+struct is_vector<std::vector<T>> : std::true_type {};
 } // namespace
 
 void write_engine_state(BinaryWriter& w, const EngineState& s) {
     const std::string_view layout = PairLaws::layout();
     w.vec(std::vector<char>(layout.begin(), layout.end()));
     each_field(s, [&](const auto& v) {
-        if constexpr (is_vector<std::remove_cvref_t<decltype(v)>>::value) w.vec(v);
-        else w.pod(v);
+        if constexpr (is_vector<std::remove_cvref_t<decltype(v)>>::value)
+            w.vec(v);
+        else
+            w.pod(v);
     });
 }
 
 EngineState read_engine_state(BinaryReader& r) {
     const std::vector<char> layout = r.vec<char>();
     if (std::string_view(layout.data(), layout.size()) != PairLaws::layout())
-        throw InputError(fmt::format("checkpoint: written with the pair laws '{}', this build has '{}'; "
-                                     "it cannot be continued by this build",
-                                     std::string(layout.begin(), layout.end()), PairLaws::layout()));
+        throw InputError(
+            fmt::format("checkpoint: written with the pair laws '{}', this build has '{}'; "
+                        "it cannot be continued by this build",
+                        std::string(layout.begin(), layout.end()), PairLaws::layout()));
     EngineState s;
     each_field(s, [&](auto& v) {
         using T = std::remove_cvref_t<decltype(v)>;
-        if constexpr (is_vector<T>::value) v = r.vec<typename T::value_type>();
-        else v = r.pod<T>();
+        if constexpr (is_vector<T>::value)
+            v = r.vec<typename T::value_type>();
+        else
+            v = r.pod<T>();
     });
     const ParticleStore& p = s.particles;
     // Consistency: every per-particle array has one entry per particle, the list fits them.
     const std::size_t n = p.id.size();
-    for (std::size_t m : {p.species.size(), p.radius.size(), p.density.size(), p.mass.size(),
-                          p.inv_mass.size(), p.inv_inertia.size(), p.position.size(),
-                          p.velocity.size(), p.omega.size(), p.force.size(), p.torque.size(),
-                          p.wall_history.size()})
+    for (std::size_t m :
+         {p.species.size(), p.radius.size(), p.density.size(), p.mass.size(), p.inv_mass.size(),
+          p.inv_inertia.size(), p.position.size(), p.velocity.size(), p.omega.size(),
+          p.force.size(), p.torque.size(), p.wall_history.size()})
         if (m != n) throw InputError("checkpoint: particle arrays of different lengths");
     const auto& nl = s.neighbors;
     const bool list_ok =
@@ -105,7 +112,8 @@ void write_checkpoint_file(const std::filesystem::path& file, const BinaryWriter
 std::vector<unsigned char> read_checkpoint_file(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError(fmt::format("no checkpoint at {}", file.string()));
-    std::vector<unsigned char> all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<unsigned char> all((std::istreambuf_iterator<char>(in)),
+                                   std::istreambuf_iterator<char>());
     constexpr std::size_t head = sizeof kMagic + sizeof kFormatVersion, tail = 16;
     if (all.size() < head + tail || std::memcmp(all.data(), kMagic, sizeof kMagic) != 0)
         throw InputError(fmt::format("{} is not a DryDEM checkpoint", file.string()));
@@ -118,7 +126,8 @@ std::vector<unsigned char> read_checkpoint_file(const std::filesystem::path& fil
     std::memcpy(&size, all.data() + all.size() - tail, 8);
     std::memcpy(&sum, all.data() + all.size() - 8, 8);
     if (size != all.size() - head - tail || fnv1a(all.data() + head, size) != sum)
-        throw InputError(fmt::format("{}: checkpoint damaged (size or checksum mismatch)", file.string()));
+        throw InputError(
+            fmt::format("{}: checkpoint damaged (size or checksum mismatch)", file.string()));
     return {all.begin() + std::ptrdiff_t(head), all.begin() + std::ptrdiff_t(head + size)};
 }
 

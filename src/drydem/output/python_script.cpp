@@ -24,7 +24,8 @@ ScriptRun run_python_script(const std::string& script, const std::vector<std::st
     posix_spawn_file_actions_init(&actions);
     const std::string log_name = log.string();
     if (!log.empty()) {
-        posix_spawn_file_actions_addopen(&actions, 1, log_name.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+        posix_spawn_file_actions_addopen(&actions, 1, log_name.c_str(),
+                                         O_WRONLY | O_CREAT | O_APPEND, 0644);
         posix_spawn_file_actions_adddup2(&actions, 1, 2);
     }
     pid_t pid = 0;

@@ -12,8 +12,8 @@ namespace drydem {
 namespace fs = std::filesystem;
 using analysis::VoxelGrid;
 
-VoxelExport write_voxel_image(const fs::path& dir, const VoxelGrid& g, const std::string& source, bool tiff,
-                              const std::string& stem) {
+VoxelExport write_voxel_image(const fs::path& dir, const VoxelGrid& g, const std::string& source,
+                              bool tiff, const std::string& stem) {
     fs::create_directories(dir);
     VoxelExport e;
     e.raw = dir / (stem + ".raw");
@@ -31,7 +31,8 @@ VoxelExport write_voxel_image(const fs::path& dir, const VoxelGrid& g, const std
     j["order"] = "x fastest, then y, then z (C order [z][y][x])";
     j["endianness"] = "little (1-byte values)";
     j["header_bytes"] = 0;
-    j["labels"] = {{"0", "pore"}, {"1", "NCM (active material)"}, {"2", "carbon black agglomerate"}};
+    j["labels"] = {
+        {"0", "pore"}, {"1", "NCM (active material)"}, {"2", "carbon black agglomerate"}};
     j["origin_m"] = {0.0, 0.0, 0.0};
     j["voxel_centre"] = "(i + 1/2, j + 1/2, k + 1/2) times the voxel size; z = 0 is the substrate";
     j["periodic"] = {true, true, false};
@@ -42,8 +43,10 @@ VoxelExport write_voxel_image(const fs::path& dir, const VoxelGrid& g, const std
         os << "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n"
            << "CompressedData = False\n"
            << fmt::format("DimSize = {} {} {}\n", g.nx, g.ny, g.nz)
-           << fmt::format("ElementSpacing = {:.9g} {:.9g} {:.9g}\n", g.ax * 1e6, g.ay * 1e6, g.az * 1e6)
-           << fmt::format("Offset = {:.9g} {:.9g} {:.9g}\n", 0.5 * g.ax * 1e6, 0.5 * g.ay * 1e6, 0.5 * g.az * 1e6)
+           << fmt::format("ElementSpacing = {:.9g} {:.9g} {:.9g}\n", g.ax * 1e6, g.ay * 1e6,
+                          g.az * 1e6)
+           << fmt::format("Offset = {:.9g} {:.9g} {:.9g}\n", 0.5 * g.ax * 1e6, 0.5 * g.ay * 1e6,
+                          0.5 * g.az * 1e6)
            << "ElementType = MET_UCHAR\n"
            << "ElementDataFile = " << e.raw.filename().string() << "\n";
     });
@@ -62,15 +65,19 @@ VoxelExport write_voxel_image(const fs::path& dir, const VoxelGrid& g, const std
             TIFFSetField(t, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_MINISBLACK);
             TIFFSetField(t, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
             TIFFSetField(t, TIFFTAG_COMPRESSION, COMPRESSION_ADOBE_DEFLATE);
-            TIFFSetField(t, TIFFTAG_ROWSPERSTRIP, std::uint32_t(std::max(1, 65536 / std::max(1, g.nx))));
+            TIFFSetField(t, TIFFTAG_ROWSPERSTRIP,
+                         std::uint32_t(std::max(1, 65536 / std::max(1, g.nx))));
             TIFFSetField(t, TIFFTAG_SUBFILETYPE, FILETYPE_PAGE);
             TIFFSetField(t, TIFFTAG_PAGENUMBER, std::uint16_t(k), std::uint16_t(g.nz));
             TIFFSetField(t, TIFFTAG_RESOLUTIONUNIT, RESUNIT_CENTIMETER);
             TIFFSetField(t, TIFFTAG_XRESOLUTION, float(0.01 / g.ax));
             TIFFSetField(t, TIFFTAG_YRESOLUTION, float(0.01 / g.ay));
-            TIFFSetField(t, TIFFTAG_IMAGEDESCRIPTION,
-                         fmt::format("DryDEM voxel labels 0 pore 1 NCM 2 CB; voxel {:.6g} um; z layer {} of {}",
-                                     g.az * 1e6, k, g.nz).c_str());
+            TIFFSetField(
+                t, TIFFTAG_IMAGEDESCRIPTION,
+                fmt::format(
+                    "DryDEM voxel labels 0 pore 1 NCM 2 CB; voxel {:.6g} um; z layer {} of {}",
+                    g.az * 1e6, k, g.nz)
+                    .c_str());
             for (int y = 0; y < g.ny; ++y) {
                 auto* row = const_cast<std::uint8_t*>(g.label.data() + g.index(0, y, k));
                 if (TIFFWriteScanline(t, row, std::uint32_t(y), 0) < 0) {
@@ -108,7 +115,8 @@ VoxelGrid read_voxel_image(const fs::path& json_file) {
     const fs::path raw = json_file.parent_path() / j.at("raw_file").get<std::string>();
     const std::size_t n = std::size_t(g.nx) * std::size_t(g.ny) * std::size_t(g.nz);
     if (!fs::exists(raw) || fs::file_size(raw) != n)
-        throw InputError(fmt::format("{}: expected {} bytes ({} x {} x {})", raw.string(), n, g.nx, g.ny, g.nz));
+        throw InputError(
+            fmt::format("{}: expected {} bytes ({} x {} x {})", raw.string(), n, g.nx, g.ny, g.nz));
     g.label.resize(n);
     std::ifstream r(raw, std::ios::binary);
     r.read(reinterpret_cast<char*>(g.label.data()), std::streamsize(n));

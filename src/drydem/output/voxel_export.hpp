@@ -19,7 +19,8 @@ struct VoxelExport {
 
 /// Writes the files into `dir` with the base name `stem`; `source` names the particle file.
 VoxelExport write_voxel_image(const std::filesystem::path& dir, const analysis::VoxelGrid& g,
-                              const std::string& source, bool tiff, const std::string& stem = "structure");
+                              const std::string& source, bool tiff,
+                              const std::string& stem = "structure");
 
 /// Reads a voxel image back from its JSON sidecar (labels and geometry); RunError/InputError on a
 /// file that does not match its sidecar.

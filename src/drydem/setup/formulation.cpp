@@ -58,7 +58,8 @@ FilmRecipe make_recipe(const Config& c) {
         if (s.count > 0 && s.diameter > r.wet_film_height)
             throw InputError(fmt::format(
                 "film too thin for its particles: wet film height {:.4g} um (film.areal_loading = "
-                "{:.4g} mg/cm2) < particle diameter {:.4g} um; raise film.areal_loading or drop the "
+                "{:.4g} mg/cm2) < particle diameter {:.4g} um; raise film.areal_loading or drop "
+                "the "
                 "largest class in formulation.ncm_diameters",
                 r.wet_film_height * 1e6, c.areal_loading * 100, s.diameter * 1e6));
     return r;
@@ -80,8 +81,8 @@ double FilmRecipe::realised_dry_mass() const {
     double m = pvdf_mass;
     for (const SizeClass& s : species) {
         // CB particles carry pore solvent: only their carbon counts as dry mass.
-        const double per_particle =
-            s.is_cb ? cb_carbon_mass / std::max(1e-300, s.count_exact) : s.density * sphere_volume(0.5 * s.diameter);
+        const double per_particle = s.is_cb ? cb_carbon_mass / std::max(1e-300, s.count_exact)
+                                            : s.density * sphere_volume(0.5 * s.diameter);
         m += per_particle * s.count;
     }
     return m;

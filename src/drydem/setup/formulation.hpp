@@ -10,23 +10,23 @@ namespace drydem {
 
 /// One particle species of the film: an NCM size class or the CB agglomerate spheres.
 struct SizeClass {
-    double diameter = 0.0;     ///< [m]
-    double density = 0.0;      ///< particle density [kg/m^3]
-    double count_exact = 0.0;  ///< unrounded count
-    std::int64_t count = 0;    ///< rounded count (C-3); 0 where count_exact is not finite
+    double diameter = 0.0;    ///< [m]
+    double density = 0.0;     ///< particle density [kg/m^3]
+    double count_exact = 0.0; ///< unrounded count
+    std::int64_t count = 0;   ///< rounded count (C-3); 0 where count_exact is not finite
     bool is_cb = false;
 };
 
 struct FilmRecipe {
-    double base_area = 0.0;          ///< A [m^2]
-    double solids_density = 0.0;     ///< ρ_s, Eq. 4 [kg/m^3]
-    double wet_film_height = 0.0;    ///< H_wet, Eq. 3 [m]
-    double ncm_volume = 0.0;         ///< V_NCM nominal [m^3]
-    double cb_carbon_mass = 0.0;     ///< m_CB [kg]
-    double cb_envelope_volume = 0.0; ///< V_CB,env [m^3]
+    double base_area = 0.0;            ///< A [m^2]
+    double solids_density = 0.0;       ///< ρ_s, Eq. 4 [kg/m^3]
+    double wet_film_height = 0.0;      ///< H_wet, Eq. 3 [m]
+    double ncm_volume = 0.0;           ///< V_NCM nominal [m^3]
+    double cb_carbon_mass = 0.0;       ///< m_CB [kg]
+    double cb_envelope_volume = 0.0;   ///< V_CB,env [m^3]
     double cb_effective_density = 0.0; ///< ρ_CB,eff = (1-ε) ρ_CB + ε ρ_f (M-1.3)
-    double pvdf_mass = 0.0;          ///< nominal PVDF mass in the box [kg]
-    double dry_mass = 0.0;           ///< nominal L A [kg]
+    double pvdf_mass = 0.0;            ///< nominal PVDF mass in the box [kg]
+    double dry_mass = 0.0;             ///< nominal L A [kg]
     /// Species in the order NCM classes (as configured), then CB; species index = position.
     std::vector<SizeClass> species;
 
@@ -41,7 +41,7 @@ FilmRecipe make_recipe(const Config& c);
 
 /// Coating density and porosity from the final thickness (M-8.4): ρ = L/H, ε = 1 - ρ/ρ_s.
 struct CoatingDensity {
-    double density;   ///< [kg/m^3]
+    double density; ///< [kg/m^3]
     double porosity;
 };
 CoatingDensity coating_density(double areal_mass, double thickness, double solids_density);

@@ -28,11 +28,15 @@ struct PlacementGrid {
     int cx(double x, const Box& b) const { return std::min(nx - 1, int(x / (b.lx / nx))); }
     int cy(double y, const Box& b) const { return std::min(ny - 1, int(y / (b.ly / ny))); }
     int cz(double z) const { return std::clamp(int(z / cell), 0, nz - 1); }
-    std::vector<std::uint32_t>& at(int ix, int iy, int iz) { return cells[(std::size_t(iz) * ny + iy) * nx + ix]; }
+    std::vector<std::uint32_t>& at(int ix, int iy, int iz) {
+        return cells[(std::size_t(iz) * ny + iy) * nx + ix];
+    }
 
-    bool overlaps(const ParticleStore& p, const Box& box, const Vec3& x, double r, double r_max_here) {
+    bool overlaps(const ParticleStore& p, const Box& box, const Vec3& x, double r,
+                  double r_max_here) {
         const double reach = r + r_max_here;
-        const int wx = int(std::ceil(reach / (box.lx / nx))), wy = int(std::ceil(reach / (box.ly / ny)));
+        const int wx = int(std::ceil(reach / (box.lx / nx))),
+                  wy = int(std::ceil(reach / (box.ly / ny)));
         const int wz = int(std::ceil(reach / cell));
         const int ix = cx(x.x, box), iy = cy(x.y, box), iz = cz(x.z);
         const bool all_x = 2 * wx + 1 >= nx, all_y = 2 * wy + 1 >= ny;
@@ -77,7 +81,8 @@ ParticleStore insert_particles(const FilmRecipe& recipe, const Box& box, double 
             throw InputError(fmt::format(
                 "film too thin for its particles: wet film height {:.4g} um < particle diameter "
                 "{:.4g} um (raise film.areal_loading or drop the largest class in "
-                "formulation.ncm_diameters)", height * 1e6, s.diameter * 1e6));
+                "formulation.ncm_diameters)",
+                height * 1e6, s.diameter * 1e6));
         const bool small = r <= small_limit;
         for (int k = 0; k < s.count; ++k) {
             bool placed = false;
@@ -92,15 +97,18 @@ ParticleStore insert_particles(const FilmRecipe& recipe, const Box& box, double 
                 p.add(next_id++, std::uint8_t(sp), r, s.density, xw);
                 PlacementGrid& g = small ? small_grid : large_grid;
                 g.at(g.cx(xw.x, box), g.cy(xw.y, box), g.cz(xw.z)).push_back(index);
-                (small ? r_max_small : r_max_large) = std::max(small ? r_max_small : r_max_large, r);
+                (small ? r_max_small : r_max_large) =
+                    std::max(small ? r_max_small : r_max_large, r);
                 placed = true;
             }
             if (!placed)
-                throw InputError(fmt::format(
-                    "random insertion failed: particle {} of {} of species {} (d = {:.4g} um) found "
-                    "no free place in {} trials; the film ({:.4g} um high) is too crowded for random "
-                    "sequential addition", k + 1, s.count, sp, s.diameter * 1e6, max_trials,
-                    height * 1e6));
+                throw InputError(fmt::format("random insertion failed: particle {} of {} of "
+                                             "species {} (d = {:.4g} um) found "
+                                             "no free place in {} trials; the film ({:.4g} um "
+                                             "high) is too crowded for random "
+                                             "sequential addition",
+                                             k + 1, s.count, sp, s.diameter * 1e6, max_trials,
+                                             height * 1e6));
         }
     }
     return p;

@@ -10,14 +10,17 @@
 
 namespace drydem {
 
-std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings, int seeds) {
+std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings,
+                                  int seeds) {
     if (seeds < 1) throw InputError(fmt::format("--seeds {}: allowed 1 or more", seeds));
-    const std::vector<double> ls = loadings.empty() ? std::vector<double>{base.areal_loading} : loadings;
+    const std::vector<double> ls =
+        loadings.empty() ? std::vector<double>{base.areal_loading} : loadings;
     const std::vector<double>& factors = base.study_shrinkage_rate_factors;
     if (!factors.empty() && base.dryer_schedule != "rates")
-        throw InputError(fmt::format("study.shrinkage_rate_factors needs dryer.schedule = \"rates\" (it is \"{}\": "
-                                     "the dryer model computes its own rates; vary its air temperatures instead)",
-                                     base.dryer_schedule));
+        throw InputError(fmt::format(
+            "study.shrinkage_rate_factors needs dryer.schedule = \"rates\" (it is \"{}\": "
+            "the dryer model computes its own rates; vary its air temperatures instead)",
+            base.dryer_schedule));
     const std::vector<double> fs = factors.empty() ? std::vector<double>{1.0} : factors;
     std::vector<StudyCase> cases;
     for (double l : ls) {
@@ -129,7 +132,9 @@ std::vector<LoadingStats> study_statistics(const std::vector<StudyRow>& rows) {
 
 void write_study_results(const std::filesystem::path& dir, const Config& base,
                          const std::vector<StudyRow>& rows) {
-    auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{:.10g}", *v) : std::string(); };
+    auto opt = [](const std::optional<double>& v) {
+        return v ? fmt::format("{:.10g}", *v) : std::string();
+    };
     auto csv_text = [](std::string s) {
         for (char& ch : s)
             if (ch == ',' || ch == '\n' || ch == '"') ch = ch == '"' ? '\'' : ';';
@@ -137,20 +142,25 @@ void write_study_results(const std::filesystem::path& dir, const Config& base,
     };
     write_file_atomically(dir / "study.csv", [&](std::ostream& o) {
         o << "areal_loading_mg_cm2,seed,status,final_thickness_um,density_g_cm3,porosity,"
-             "process_time_final_s,wall_time_s,run_dir,error,tortuosity_through_plane,tortuosity_in_plane,"
-             "bruggeman_exponent,electronic_conductivity_S_m,cb_percolates,binder_bottom10_over_mean,"
+             "process_time_final_s,wall_time_s,run_dir,error,tortuosity_through_plane,tortuosity_"
+             "in_plane,"
+             "bruggeman_exponent,electronic_conductivity_S_m,cb_percolates,binder_bottom10_over_"
+             "mean,"
              "shrinkage_rate_factor\n";
         for (const auto& r : rows)
-            o << fmt::format("{:.10g},{},{},{},{},{},{},{:.4g},runs/{},{},{},{},{},{},{},{},{:g}\n", r.c.areal_loading * 100.0,
-                             r.c.seed, r.status, opt(r.thickness_um), opt(r.density_g_cm3),
-                             opt(r.porosity), opt(r.process_time_final_s), r.wall_time_s, r.c.name,
-                             csv_text(r.error), opt(r.tortuosity_z), opt(r.tortuosity_in_plane), opt(r.bruggeman_z),
-                             opt(r.electronic_conductivity), opt(r.cb_percolates), opt(r.binder_bottom10),
-                             r.c.shrinkage_rate_factor);
+            o << fmt::format("{:.10g},{},{},{},{},{},{},{:.4g},runs/{},{},{},{},{},{},{},{},{:g}\n",
+                             r.c.areal_loading * 100.0, r.c.seed, r.status, opt(r.thickness_um),
+                             opt(r.density_g_cm3), opt(r.porosity), opt(r.process_time_final_s),
+                             r.wall_time_s, r.c.name, csv_text(r.error), opt(r.tortuosity_z),
+                             opt(r.tortuosity_in_plane), opt(r.bruggeman_z),
+                             opt(r.electronic_conductivity), opt(r.cb_percolates),
+                             opt(r.binder_bottom10), r.c.shrinkage_rate_factor);
     });
     nlohmann::json j;
     j["name"] = base.name;
-    auto jopt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+    auto jopt = [](const std::optional<double>& v) {
+        return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+    };
     for (const auto& r : rows)
         j["cases"].push_back({{"areal_loading_mg_cm2", r.c.areal_loading * 100.0},
                               {"shrinkage_rate_factor", r.c.shrinkage_rate_factor},
@@ -184,13 +194,16 @@ void write_study_results(const std::filesystem::path& dir, const Config& base,
     for (std::size_t k = 0; k < base.measured_loadings.size(); ++k) {
         nlohmann::json m = {{"areal_loading_mg_cm2", base.measured_loadings[k] * 100.0},
                             {"thickness_um", base.measured_thickness[k] * 1e6}};
-        if (!base.measured_thickness_std.empty()) m["thickness_std_um"] = base.measured_thickness_std[k] * 1e6;
+        if (!base.measured_thickness_std.empty())
+            m["thickness_std_um"] = base.measured_thickness_std[k] * 1e6;
         if (!base.measured_density.empty()) m["density_g_cm3"] = base.measured_density[k] * 1e-3;
-        if (!base.measured_density_std.empty()) m["density_std_g_cm3"] = base.measured_density_std[k] * 1e-3;
+        if (!base.measured_density_std.empty())
+            m["density_std_g_cm3"] = base.measured_density_std[k] * 1e-3;
         measured.push_back(m);
     }
     j["measured"] = measured;
-    const int failed = int(std::count_if(rows.begin(), rows.end(), [](const StudyRow& r) { return r.status != "completed"; }));
+    const int failed = int(std::count_if(
+        rows.begin(), rows.end(), [](const StudyRow& r) { return r.status != "completed"; }));
     j["completed"] = int(rows.size()) - failed;
     j["failed"] = failed;
     write_file_atomically(dir / "study.json", [&](std::ostream& o) { o << j.dump(2) << "\n"; });

@@ -16,28 +16,30 @@ namespace drydem {
 struct StudyCase {
     double areal_loading = 0.0; ///< [kg/m^2]
     std::uint64_t seed = 0;
-    std::string name;           ///< also the run's folder name, e.g. "L20.10_s12345", "L3.00_r0.5_s12345"
-    double shrinkage_rate_factor = 1.0; ///< on every dryer.shrinkage_rates entry (study.shrinkage_rate_factors)
+    std::string name; ///< also the run's folder name, e.g. "L20.10_s12345", "L3.00_r0.5_s12345"
+    double shrinkage_rate_factor =
+        1.0; ///< on every dryer.shrinkage_rates entry (study.shrinkage_rate_factors)
 };
 
 /// loadings x shrinkage-rate factors x seeds; an empty `loadings` means the config's own loading,
 /// empty study.shrinkage_rate_factors the config's rates. Seeds are the config's run.seed,
 /// run.seed + 1, ... Throws InputError for no seeds, a non-positive loading, or rate factors
 /// without dryer.schedule = "rates" (the dryer model sets its own rates).
-std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings, int seeds);
+std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings,
+                                  int seeds);
 
 /// The outcome of one case, as read back from its summary.json.
 struct StudyRow {
     StudyCase c;
-    std::string status;                  ///< "completed", "failed" or "not started"
+    std::string status; ///< "completed", "failed" or "not started"
     std::string error;
     std::optional<double> thickness_um, density_g_cm3, porosity, process_time_final_s;
     double wall_time_s = 0.0;
     /// From the run's analysis/analysis.json where it has them (docs/analysis.md): tortuosity factor
     /// through-plane and in-plane, Bruggeman exponent, electronic conductivity [S/m], CB percolation
     /// (1/0), binder in the bottom 10 % of the film over the mean.
-    std::optional<double> tortuosity_z, tortuosity_in_plane, bruggeman_z, electronic_conductivity, cb_percolates,
-        binder_bottom10;
+    std::optional<double> tortuosity_z, tortuosity_in_plane, bruggeman_z, electronic_conductivity,
+        cb_percolates, binder_bottom10;
 };
 
 /// Reads `run_dir/summary.json` (missing or unreadable: status "failed" with the reason).
