@@ -2,6 +2,7 @@
 // Capillary force at the liquid level (paper Eq. 11-12 with I-1, C-20): model.md M-6, V-10.
 #include "drydem/forces/capillary_front.hpp"
 #include <gtest/gtest.h>
+#include "expect_rel.hpp"
 #include <cmath>
 #include <numbers>
 
@@ -18,9 +19,7 @@ double force_at(double u, double r = kR) {
     return capillary_front(kLevel - u * r, r, kLevel, kCap).z;
 }
 
-void expect_rel(double actual, double expected, double rel = 1e-4) {
-    EXPECT_NEAR(actual, expected, rel * std::abs(expected));
-}
+using testing_support::expect_rel;
 
 TEST(CapillaryFront, ReferenceValuesV10) {
     expect_rel(force_at(0.9397), 2.0341e-4);

@@ -4,14 +4,13 @@
 // largest NCM r = 5.675 um, E* = 78.02 GPa), and how each scheme scales them.
 #include "drydem/drying/dimensionless_groups.hpp"
 #include <gtest/gtest.h>
+#include "expect_rel.hpp"
 #include <cmath>
 
 namespace {
 using namespace drydem;
 
-void expect_rel(double actual, double expected, double rel = 1e-4) {
-    EXPECT_NEAR(actual, expected, rel * std::abs(expected));
-}
+using testing_support::expect_rel;
 
 TEST(DimensionlessGroups, PhysicalAgainstHandValues) {
     const DimensionlessGroups d = dimensionless_groups(Config{});

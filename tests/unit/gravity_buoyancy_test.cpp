@@ -4,6 +4,7 @@
 #include "drydem/forces/gravity_buoyancy.hpp"
 #include "drydem/forces/stokes_drag.hpp"
 #include <gtest/gtest.h>
+#include "expect_rel.hpp"
 #include <numbers>
 
 namespace {
@@ -12,9 +13,7 @@ using namespace drydem;
 constexpr double kPi = std::numbers::pi;
 const GravityBuoyancyParams kGravity{9.81e6, 1030.0}; // scaled g_s, NMP
 
-void expect_rel(double actual, double expected, double rel = 1e-4) {
-    EXPECT_NEAR(actual, expected, rel * std::abs(expected));
-}
+using testing_support::expect_rel;
 
 TEST(GravityBuoyancy, ForceAlongMinusZ) {
     const double r = 0.75e-6;

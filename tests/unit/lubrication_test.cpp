@@ -3,6 +3,7 @@
 // pair-law property checks (Newton, rigid-body motion, angular momentum, dissipation, rotation).
 #include "drydem/forces/lubrication.hpp"
 #include <gtest/gtest.h>
+#include "expect_rel.hpp"
 #include <cmath>
 #include <numbers>
 
@@ -15,9 +16,7 @@ constexpr double kPi = std::numbers::pi;
 const LubricationParams kLub{1.801, 0.1};   // full η (C-17)
 const Vec3 kN = Vec3{1.0, 2.0, -2.0} / 3.0; // oblique unit normal
 
-void expect_rel(double actual, double expected, double rel = 1e-4) {
-    EXPECT_NEAR(actual, expected, rel * std::abs(expected));
-}
+using testing_support::expect_rel;
 
 /// Pair with unit normal n, gap h and given velocities.
 PairGeometry pair(double r_i, double r_j, double gap, const Vec3& v_i, const Vec3& v_j,

@@ -2,6 +2,7 @@
 // Stokes drag, translation (paper Eq. 10) and rotation (C-18): model.md M-5, V-9.
 #include "drydem/forces/stokes_drag.hpp"
 #include <gtest/gtest.h>
+#include "expect_rel.hpp"
 #include <numbers>
 
 namespace {
@@ -11,9 +12,7 @@ constexpr double kR = 0.75e-6; // CB radius
 constexpr double kPi = std::numbers::pi;
 const StokesDragParams kDrag{0.1801, true}; // η/b
 
-void expect_rel(double actual, double expected, double rel = 1e-4) {
-    EXPECT_NEAR(actual, expected, rel * std::abs(expected));
-}
+using testing_support::expect_rel;
 
 TEST(StokesDrag, ForceAndTorque) {
     const Vec3 v{0.3, -0.4, 1.2}, w{1e5, 2e5, -3e5};

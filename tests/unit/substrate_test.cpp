@@ -2,6 +2,7 @@
 // Particle-substrate contact (model.md M-2.6, V-2) and lubrication (M-4.4, V-8).
 #include "drydem/forces/substrate.hpp"
 #include <gtest/gtest.h>
+#include "expect_rel.hpp"
 #include <cmath>
 #include <numbers>
 
@@ -14,9 +15,7 @@ constexpr double kDt = 1e-11;
 constexpr double kPi = std::numbers::pi;
 const SubstrateLubricationParams kLub{1.801, 0.1};
 
-void expect_rel(double actual, double expected, double rel = 1e-4) {
-    EXPECT_NEAR(actual, expected, rel * std::abs(expected));
-}
+using testing_support::expect_rel;
 
 // Aluminium (C-8) against NCM/CB (E = 142 GPa, ν = 0.3), e = 0.5, μ_s = 0.8 (C-6).
 HertzMindlinParams wall() { return mix_hertz_mindlin(70e9, 0.33, 142e9, 0.3, 0.5, 0.8, 0.0); }

@@ -2,6 +2,7 @@
 // Van der Waals law (model.md M-3) against V-6, plus the pair-law property checks.
 #include "drydem/forces/van_der_waals.hpp"
 #include <gtest/gtest.h>
+#include "expect_rel.hpp"
 
 namespace {
 using namespace drydem;
@@ -22,9 +23,7 @@ double magnitude(const PairGeometry& g, const VanDerWaalsParams& p) {
     return norm(van_der_waals(g, p).force_i);
 }
 
-void expect_rel(double actual, double expected, double rel = 1e-4) {
-    EXPECT_NEAR(actual, expected, rel * std::abs(expected));
-}
+using testing_support::expect_rel;
 
 TEST(VanDerWaals, CbCbReferenceValuesV6) {
     for (double h : {5e-9, 1e-9, 0.0, -20e-9})
