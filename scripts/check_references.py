@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 TAG = re.compile(r"(?<![\w.\-/])([MCIVD]-\d+(?:\.\d+)?)(?![\w\-]|\.\d)")
-OUTSIDE = re.compile(r"shared/(design|paper)|dryer_ref\.py")
+OUTSIDE = re.compile(r"shared/(design|paper)|dryer_ref\.py|\b(interface|ecosystem|style|scaling|calendering|architecture)\.md")
 CITING = ("src", "tests", "scripts", "bench", "examples", "docs", "cmake", ".ci")
 SUFFIXES = {".cpp", ".hpp", ".h", ".def", ".py", ".sh", ".toml", ".md", ".txt", ".cmake", ""}
 # The tags of the paper's own numbering are Eq./Fig./Table numbers, never these forms; the check

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Checkpoints (interface.md `checkpoint/`, architecture.md "Determinism"): an engine restored from
+// Checkpoints (README "Outputs" `checkpoint/`, ARCHITECTURE.md): an engine restored from
 // the serialized state continues bit for bit like the one that never stopped, with every drying
 // force law on (contact histories, lubrication, capillary front, substrate); damaged or foreign
 // files are refused with a clear error.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Configuration parsing (interface.md "Config"): the embedded default equals Config{}, every
+// Configuration parsing (docs/configuration.md): the embedded default equals Config{}, every
 // example parses, and bad input throws InputError naming the key, the value and what is allowed.
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/core/error.hpp"

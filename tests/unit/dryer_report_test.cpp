@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// dryer.json / dryer.csv of `drydem dryer` (interface.md): the keys users script against.
+// dryer.json / dryer.csv of `drydem dryer` (README "Command line"): the keys users script against.
 #include "drydem/dryer_model/dryer_config.hpp"
 #include "drydem/dryer_model/dryer_report.hpp"
 #include <gtest/gtest.h>

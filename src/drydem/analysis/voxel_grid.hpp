@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Labelled voxel image of a structure: 0 pore, 1 NCM, 2 CB (ecosystem.md, voxel export), x fastest
+// Labelled voxel image of a structure: 0 pore, 1 NCM, 2 CB (docs/analysis.md, voxel export), x fastest
 // then y then z, voxel (i, j, k) centred at ((i + ½) a, (j + ½) a, (k + ½) a). Periodic in x and y
 // (the box side is divided into whole voxels: a is adjusted per axis by < 1/n), substrate below
 // k = 0, open above the last layer.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `drydem bench DATA`: the peers' granular benchmark (../shared/peers/README.md) in DryDEM: the
+// `drydem bench DATA`: the peers' granular benchmark (bench/peer_bench.sh, README "Performance") in DryDEM: the
 // settled bed from rest, Hertz-Mindlin with tangential history (E = 1e10 Pa, ν = 0.3, e = 0.5,
 // μ = 0.8, particles and wall), gravity 9.81e6 m/s², per-type Stokes drag 6πηr (translation only,
 // like `fix viscous`), dt = 2e-10 s, skin 0.3 um; `warmup` untimed then `steps` timed steps.

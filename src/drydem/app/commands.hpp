@@ -13,7 +13,7 @@ namespace drydem::app {
 /// `drydem check`: prints every derived quantity of the configuration; runs nothing.
 void print_check(const Config& c);
 
-/// `drydem bench`: the peers' granular benchmark (../shared/peers) in DryDEM.
+/// `drydem bench`: the peers' granular benchmark (bench/peer_bench.sh, README "Performance") in DryDEM.
 struct BenchOptions {
     std::string data;
     std::int64_t warmup = 200, steps = 2000;

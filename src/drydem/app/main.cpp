@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `drydem` command line (interface.md): run, check, dryer, analyze, study, calibrate, config, bench. Exit codes: 0 success,
+// `drydem` command line (README "Command line"): run, check, dryer, analyze, study, calibrate, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
 #include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/app/commands.hpp"
@@ -257,8 +257,8 @@ void declare_analyze_bench(CommandLine& a) {
     a.analyze->add_flag("--overwrite", a.overwrite,
                         "replace a previous analysis in the output folder");
 
-    a.bench =
-        a.cli.add_subcommand("bench", "the peers' granular benchmark (../shared/peers) in DryDEM");
+    a.bench = a.cli.add_subcommand("bench",
+                                   "the peers' granular benchmark (bench/peer_bench.sh) in DryDEM");
     a.bench->add_option("data", a.bench_opt.data, "settled bed (LAMMPS data or CSV)")
         ->required()
         ->check(CLI::ExistingFile);

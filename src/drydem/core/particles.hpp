@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Particle store: structure of arrays, SI units, double precision. Identity (id) is separate from
 // storage position, so particles can be re-sorted for memory locality while contact history,
-// output and restarts stay keyed by id (architecture.md, "Principles").
+// output and restarts stay keyed by id (ARCHITECTURE.md).
 #pragma once
 #include "drydem/core/sphere.hpp"
 #include "drydem/core/vec3.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Output of `drydem dryer` (interface.md): dryer.json (per-zone shrinkage rates, wet-film steady
+// Output of `drydem dryer` (README "Command line", docs/dryer.md): dryer.json (per-zone shrinkage rates, wet-film steady
 // states, consolidation and dry positions, preset and every input) and dryer.csv (the drying
 // curve along the dryer, paper Figs. 2-3).
 #pragma once

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The drying simulation (paper Sec. 4 and 8, model.md M-8): set-up from the formulation, the
 // descending liquid level, final-thickness detection with a relaxation window, and the outputs of
-// interface.md (summary.json, timeseries.csv, snapshots, final particles, log, plots).
+// README "Outputs" (summary.json, timeseries.csv, snapshots, final particles, log, plots).
 #pragma once
 #include "drydem/io/config.hpp"
 #include <cstdint>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Files of a structure analysis (interface.md, `drydem analyze`): analysis.json, profiles.csv,
+// Files of a structure analysis (README "Outputs", docs/analysis.md, `drydem analyze`): analysis.json, profiles.csv,
 // psd_chord.csv, psd_local_thickness.csv (with the simulated mercury intrusion beside it).
 #pragma once
 #include "drydem/analysis/analyze.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Checkpoints (interface.md `checkpoint/`): a versioned little binary format holding the engine's
+// Checkpoints (README "Outputs", `checkpoint/`): a versioned little binary format holding the engine's
 // complete state (particles in storage order, neighbor list with contact histories, step, time,
 // liquid level, Δt), the drying run's own progress (a versioned list of named fields,
 // drying/run_state.hpp), the seed and the resolved config. Doubles are

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Voxel image export (ecosystem.md): `structure.raw` (uint8 labels 0 pore / 1 NCM / 2 CB, x fastest
+// Voxel image export (docs/analysis.md "Files"): `structure.raw` (uint8 labels 0 pore / 1 NCM / 2 CB, x fastest
 // then y then z, no header), `structure.json` (sidecar: sizes, voxel size, order, labels, origin,
 // source), `structure.mhd` (MetaImage header pointing at the raw: ParaView, Fiji/ImageJ, ITK,
 // GeoDict's raw import) and optionally `structure.tif` (multi-page, one page per z layer, deflate).
