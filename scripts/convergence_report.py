@@ -59,6 +59,7 @@ def yardstick(r):
     zone2 = r["dimensionless_groups"]["zones"][-1]["simulated"]
     return {
         "thickness": r["final_thickness_um"], "relaxed": r["final_thickness_relaxed_um"],
+        "half_solid": r["thickness_half_solid_um"],
         "density": r["density_g_cm3"], "porosity": r["porosity"],
         "z_ncm_ncm": co["ncm_ncm"], "z_ncm_cb": co["ncm_cb"], "z_cb_cb": co["cb_cb"],
         "psd_peak": a.get("psd_peak_um"), "psd_median": a.get("psd_median_um"),
@@ -71,7 +72,8 @@ def yardstick(r):
     }
 
 
-COLUMNS = [("thickness", "final thickness (µm)", 2), ("relaxed", "relaxed (µm)", 2), ("density", "density (g/cm³)", 3),
+COLUMNS = [("thickness", "final thickness (µm)", 2), ("relaxed", "relaxed (µm)", 2),
+           ("half_solid", "half-solid thickness (µm)", 2), ("density", "density (g/cm³)", 3),
            ("porosity", "porosity", 3), ("z_ncm_ncm", "Z NCM-NCM", 2), ("z_ncm_cb", "Z NCM-CB", 2),
            ("z_cb_cb", "Z CB-CB", 2), ("psd_median", "pore median (µm)", 3), ("t_leave", "leaves level (s)", 2),
            ("level_leave", "at level (µm)", 2), ("p99", "p99 overlap", 3), ("max", "max overlap", 3)]
