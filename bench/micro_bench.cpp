@@ -38,8 +38,9 @@ void hertz_mindlin_throughput(benchmark::State& state) {
     }
     for (auto _ : state) {
         for (int k = 0; k < n; ++k) {
-            const PairGeometry g = make_pair_geometry(d[k], norm(d[k]), r, r, 2e-15, 2e-15,
-                                                      {1e-3, 0, 0}, {0, 1e-3, 0}, {0, 0, 1e2}, {1e2, 0, 0});
+            const PairGeometry g =
+                make_pair_geometry(d[k], norm(d[k]), r, r, 2e-15, 2e-15, {1e-3, 0, 0}, {0, 1e-3, 0},
+                                   {0, 0, 1e2}, {1e2, 0, 0});
             benchmark::DoNotOptimize(hertz_mindlin(g, p, hist[k], 2e-10));
         }
     }
