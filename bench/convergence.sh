@@ -13,7 +13,7 @@
 #   q_b33 q_b316
 #               Stokes knob at fixed f: b = 33.3 (k = 3e5, k b = 1e7) and b = 316 (k = 2.85e6,
 #               k b = 9e8); with q_base (k b = 9e7) two decades of the Stokes number
-#   q_ecb400    CB Young's modulus 400 GPa instead of 142 (at small overlap)
+#   q_ecb400    CB Young's modulus 400 GPa instead of 142, at e = 24 (p99 overlap 0.2 %; against q_e24)
 #   q_dt_half   run.time_step at half of q_base's mean step
 #   archive:STEP
 #               the runs STEP has finished so far into the archive
@@ -56,7 +56,7 @@ for step in "$@"; do
     q_e240) study q_e240 $fr --set scaling.stiffness_factor=240 ;;
     q_b33) study q_b33 $fr --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
     q_b316) study q_b316 $fr --set scaling.time_factor=2.846e6 --set scaling.viscosity_reduction=316.23 ;;
-    q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa ;;
+    q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa --set scaling.stiffness_factor=24 ;;
     q_dt_half) study q_dt_half $fr --set "run.time_step=${DT_HALF:?set DT_HALF to half the mean step of q_base}" ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;

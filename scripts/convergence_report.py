@@ -28,13 +28,13 @@ from validation_report import FRONT_GAP_UM, ROOT, mean_sd, runs  # noqa: E402
 
 # The quick case leaves the level after a few seconds; the validation's 20 s applies to 20.1.
 QUICK_FRONT_AFTER_S = 2.0
-# (step, knob value, label) per series; q_base is the setting the others move away from.
+# Per series: its reference step and (step, knob value) points.
 SERIES = {
-    "overlap knob: scaling.stiffness_factor e": [("q_e1", 1), ("q_e2.4", 2.4), ("q_e7.5", 7.5), ("q_e24", 24),
-                                                 ("q_base", 75), ("q_e240", 240)],
-    "Stokes knob: k b at f = k/b = 9e3": [("q_b33", 1e7), ("q_base", 9e7), ("q_b316", 9e8)],
-    "CB Young's modulus (GPa)": [("q_base", 142), ("q_ecb400", 400)],
-    "time step": [("q_base", 1.0), ("q_dt_half", 0.5)],
+    "overlap knob: scaling.stiffness_factor e": ("q_base", [("q_e1", 1), ("q_e2.4", 2.4), ("q_e7.5", 7.5), ("q_e24", 24),
+                                                           ("q_base", 75), ("q_e240", 240)]),
+    "Stokes knob: k b at f = k/b = 9e3": ("q_base", [("q_b33", 1e7), ("q_base", 9e7), ("q_b316", 9e8)]),
+    "CB Young's modulus (GPa), at e = 24": ("q_e24", [("q_e24", 142), ("q_ecb400", 400)]),
+    "time step": ("q_base", [("q_base", 1.0), ("q_dt_half", 0.5)]),
 }
 STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_dt_half"]
 
@@ -119,38 +119,32 @@ class Report:
                 self.say(f"| {s} | " + " | ".join(cell([x[k] for x in y], d) for k, _, d in COLUMNS) + " |")
         self.say("")
 
-    def yardstick_sd(self):
-        """The seed spread of the thickness: the step's own with several seeds, else q_paper's."""
-        for s in ["q_base", "q_paper"]:
-            m, sd, n = mean_sd([x["thickness"] for x in self.steps[s]])
-            if n > 1:
-                return sd, s
-        return None, None
-
     def series(self):
-        sd_ref, ref = self.yardstick_sd()
-        self.say("## Series against q_base", "")
-        if sd_ref is not None:
-            self.say(f"Yardstick: twice the combined standard error of the two steps' seeds; where a step has one "
-                     f"seed, the thickness s.d. of {ref} ({sd_ref:.3f} µm) stands in for its spread.", "")
-        base = self.steps["q_base"]
-        for title, points in SERIES.items():
+        sd_ref = {k: self.seed_sd(k) for k in ("thickness", "half_solid")}
+        self.say("## Series", "")
+        self.say("Yardstick: twice the combined standard error of the two steps' seeds; where a step has one "
+                 f"seed, the s.d. of {sd_ref['thickness'][1]} over its seeds stands in ({sd_ref['thickness'][0]:.3f} µm "
+                 f"final, {sd_ref['half_solid'][0]:.3f} µm half-solid thickness).", "")
+        for title, (ref, points) in SERIES.items():
             have = [(s, x) for s, x in points if self.steps[s]]
-            if len(have) < 2 or not base:
+            if len(have) < 2 or not self.steps[ref]:
                 continue
-            self.say(f"### {title}", "", "| step | knob | thickness (µm) | Δ vs q_base (µm) | 2 × combined s.e. (µm) | moves? |",
-                     "|---|---|---|---|---|---|")
+            self.say(f"### {title} (against {ref})", "",
+                     "| step | knob | final thickness (µm) | Δ (µm) | 2 × s.e. | moves? | half-solid (µm) | Δ (µm) | 2 × s.e. | moves? |",
+                     "|---|---|---|---|---|---|---|---|---|---|")
             xs, ms, es = [], [], []
             for s, x in have:
-                t = [y["thickness"] for y in self.steps[s]]
-                m, sd, n = mean_sd(t)
-                mb, sdb, nb = mean_sd([y["thickness"] for y in base])
-                sd = sd if n > 1 else (sd_ref or 0.0)
-                sdb = sdb if nb > 1 else (sd_ref or 0.0)
-                se2 = 2 * math.sqrt(sd ** 2 / n + sdb ** 2 / nb)
-                verdict = "–" if s == "q_base" else ("no" if abs(m - mb) < se2 else "**yes**")
-                self.say(f"| {s} | {x:g} | {cell(t, 2)} | {m - mb:+.2f} | {se2:.2f} | {verdict} |")
-                xs.append(x), ms.append(m), es.append(sd)
+                cells = [s, f"{x:g}"]
+                for key in ("thickness", "half_solid"):
+                    m, sd, n = mean_sd([y[key] for y in self.steps[s]])
+                    mr, sdr, nr = mean_sd([y[key] for y in self.steps[ref]])
+                    sd, sdr = (sd if n > 1 else sd_ref[key][0]), (sdr if nr > 1 else sd_ref[key][0])
+                    se2 = 2 * math.sqrt(sd ** 2 / n + sdr ** 2 / nr)
+                    verdict = "–" if s == ref else ("no" if abs(m - mr) < se2 else "**yes**")
+                    cells += [cell([y[key] for y in self.steps[s]], 2), f"{m - mr:+.2f}", f"{se2:.2f}", verdict]
+                    if key == "thickness":
+                        xs.append(x), ms.append(m), es.append(sd)
+                self.say("| " + " | ".join(cells) + " |")
             self.say("")
             fig, ax = plt.subplots(figsize=(5, 3.5))
             ax.errorbar(xs, ms, yerr=es, fmt="o-")
@@ -161,6 +155,14 @@ class Report:
             name = title.split(":")[0].split(" ")[0].lower().replace("'", "")
             fig.savefig(self.figures / f"convergence_{name}.png", dpi=120)
             plt.close(fig)
+
+    def seed_sd(self, key):
+        """The seed s.d. of a quantity: q_base's where it has several seeds, else q_paper's."""
+        for s in ["q_base", "q_paper"]:
+            m, sd, n = mean_sd([x[key] for x in self.steps[s]])
+            if n > 1:
+                return sd, s
+        return 0.0, "none"
 
     def write(self):
         self.say("# Convergence of the force-ratio scheme (generated by scripts/convergence_report.py)", "",
