@@ -112,7 +112,8 @@ overlap_reruns() {  # $1 step: its runs stopped by the overlap limit, again with
   for run in "$dir"/runs/*/; do
     run=${run%/}
     [[ $run == *_overlap1.5 ]] && continue
-    /usr/bin/python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s.get("status") == "failed" and "runaway overlap" in s.get("error", "") else 1)' \
+    # summary.json's stop_reason; the archived runs that predate it are read by their error text
+    /usr/bin/python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s.get("stop_reason", "runaway_overlap" if "runaway overlap" in s.get("error", "") else "") == "runaway_overlap" else 1)' \
       "$run/summary.json" 2>/dev/null || continue
     local again=${run}_overlap1.5 resume=()
     if [[ -f $again/summary.json ]] && grep -q '"status": "completed"' "$again/summary.json"; then continue; fi

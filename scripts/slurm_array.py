@@ -23,9 +23,10 @@ import signal
 import subprocess
 import sys
 
-# Summary errors of a run that stopped on request (SIGTERM at a time limit, Ctrl-C, the test
-# option): such a run resumes from its checkpoint. Every other failure is final.
-STOPPED_MARKERS = ("interrupted by signal", "stopped after step")
+# The stop reasons (summary.json `stop_reason`, core/error.hpp) of a run that stopped on request
+# (SIGTERM at a time limit, Ctrl-C, the test option): such a run resumes from its checkpoint.
+# Every other failure is final.
+STOPPED_REASONS = ("interrupted", "stop_after_steps")
 
 
 def run_state(run_dir):
@@ -41,7 +42,7 @@ def run_state(run_dir):
             s = {}
         if s.get("status") == "completed":
             return "completed"
-        if any(m in str(s.get("error", "")) for m in STOPPED_MARKERS) and has_checkpoint:
+        if s.get("stop_reason") in STOPPED_REASONS and has_checkpoint:
             return "stopped"
         if s.get("status") == "failed":
             return "failed"
@@ -69,7 +70,7 @@ def task_script(drydem, task, plots=False):
     exe = shlex.quote(drydem)
     args = " ".join(shlex.quote(a) for a in task["args"])
     flags = "--quiet" + ("" if plots else " --no-plots")
-    markers = "|".join(STOPPED_MARKERS)
+    markers = "|".join(f'"stop_reason": "{r}"' for r in STOPPED_REASONS)
     return f"""#!/bin/bash
 # One drydem run of a Slurm array task (scripts/slurm_array.py).
 threads=${{SLURM_CPUS_PER_TASK:-1}}

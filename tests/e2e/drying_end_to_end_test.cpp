@@ -97,6 +97,7 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
     std::ifstream js(dir / "summary.json");
     const nlohmann::json summary = nlohmann::json::parse(js);
     EXPECT_EQ(summary["status"], "completed");
+    EXPECT_EQ(summary["stop_reason"], "completed");
     EXPECT_NEAR(summary["porosity"].get<double>(), r.porosity, 1e-12);
 
     // The structure analysis of final.csv (docs/analysis.md): its thickness is the relaxed top, its
@@ -175,6 +176,7 @@ TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
     const DryingResult r = run_drying(c, o);
     EXPECT_FALSE(r.completed);
     EXPECT_NE(r.error.find("--stop-after-steps"), std::string::npos) << r.error;
+    EXPECT_EQ(r.stop_reason, "stop_after_steps");
     std::ifstream js(dir / "summary.json");
     const nlohmann::json s = nlohmann::json::parse(js);
     EXPECT_EQ(s["scaling"]["scheme"], "force_ratio");
@@ -219,6 +221,9 @@ TEST(DryingEndToEnd, BlowUpStopsWithDiagnosisAndKeepsOutputs) {
     const nlohmann::json summary = nlohmann::json::parse(js);
     EXPECT_EQ(summary["status"], "failed");
     EXPECT_EQ(summary["error"], r.error);
+    // The machine-readable reason matches the prose (summary.json stop_reason, core/error.hpp).
+    EXPECT_EQ(summary["stop_reason"],
+              r.error.find("non-finite") != std::string::npos ? "blow_up" : "runaway_overlap");
     EXPECT_TRUE(std::filesystem::exists(dir / "timeseries.csv"));
     EXPECT_TRUE(std::filesystem::exists(dir / "final.csv"));
 }
@@ -239,6 +244,8 @@ TEST(DryingEndToEnd, StopRequestEndsTheRunAndKeepsOutputs) {
     EXPECT_NE(r.error.find("interrupted by signal 2"), std::string::npos) << r.error;
     EXPECT_EQ(r.steps, 1);
     std::ifstream js(dir / "summary.json");
-    EXPECT_EQ(nlohmann::json::parse(js)["status"], "failed");
+    const nlohmann::json summary = nlohmann::json::parse(js);
+    EXPECT_EQ(summary["status"], "failed");
+    EXPECT_EQ(summary["stop_reason"], "interrupted");
     EXPECT_TRUE(std::filesystem::exists(dir / "final.csv"));
 }

@@ -3,6 +3,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace drydem {
 
@@ -10,9 +11,13 @@ namespace drydem {
 struct InputError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-/// A simulation that cannot continue (blow-up, I/O failure). Exit code 1.
+/// A simulation that cannot continue (blow-up, I/O failure). Exit code 1. `reason` is the run's
+/// machine-readable stop reason (summary.json `stop_reason`): "blow_up", "runaway_overlap",
+/// "stability_guard", "interrupted", "stop_after_steps", "max_process_time", or "error".
 struct RunError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit RunError(const std::string& what, std::string stop_reason = "error")
+        : std::runtime_error(what), reason(std::move(stop_reason)) {}
+    std::string reason;
 };
 
 } // namespace drydem

@@ -213,14 +213,17 @@ void DryingRun::stop(const StepView& at) const {
     if (at.stop == kStopAfterSteps)
         throw RunError(
             fmt::format("stopped after step {} (--stop-after-steps) at process time {:.4g} s; {}",
-                        sim_.step_count(), tp, resume));
+                        sim_.step_count(), tp, resume),
+            "stop_after_steps");
     if (at.stop != 0)
         throw RunError(fmt::format("interrupted by signal {} at process time {:.4g} s; {}", at.stop,
-                                   tp, resume));
+                                   tp, resume),
+                       "interrupted");
     throw RunError(
         fmt::format("no final thickness within run.max_process_time = {} s (layer top {:.4g} um, "
                     "level {:.4g} um)",
-                    c_.max_process_time, sim_.stats().layer_top * 1e6, sim_.liquid_level() * 1e6));
+                    c_.max_process_time, sim_.stats().layer_top * 1e6, sim_.liquid_level() * 1e6),
+        "max_process_time");
 }
 
 /// The results (also of a failed run: what it reached), then every output's end. An output that
@@ -257,9 +260,11 @@ DryingResult DryingRun::dry() {
         start();
         while (!end_.done()) step();
         result.completed = true;
+        result.stop_reason = "completed";
         result.relaxed_thickness = sim_.stats().layer_top;
     } catch (const RunError& e) {
         result.error = e.what();
+        result.stop_reason = e.reason;
         log_->error("run failed: {}", e.what());
     }
     finish(result);

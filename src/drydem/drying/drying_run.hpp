@@ -28,6 +28,8 @@ struct RunOptions {
 struct DryingResult {
     bool completed = false;
     std::string error;
+    /// Why the run stopped (summary.json `stop_reason`): "completed", or a RunError's reason.
+    std::string stop_reason;
     double final_thickness = 0.0;   ///< H_final at t* [m] (M-8.2)
     double relaxed_thickness = 0.0; ///< H_layer at the end of the relaxation window [m]
     double density = 0.0;           ///< [kg/m^3]

@@ -90,6 +90,7 @@ void add_results(const RunContext& ctx, const RunEnd& e, json& s) {
     const Film& film = ctx.film;
     const bool found = e.end.final_found();
     s["status"] = r.completed ? "completed" : "failed";
+    s["stop_reason"] = r.stop_reason;
     if (!r.completed) s["error"] = r.error;
     s["name"] = ctx.config.name;
     s["final_thickness_um"] = if_found(found, r.final_thickness * 1e6);

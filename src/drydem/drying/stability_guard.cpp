@@ -34,14 +34,14 @@ void StabilityGuard::start(Simulation& sim) {
     dt_min_ = sim.settings().dt;
     const std::string refused = check(sim);
     builds_seen_ = sim.neighbors().builds();
-    if (!refused.empty()) throw RunError(refused);
+    if (!refused.empty()) throw RunError(refused, "stability_guard");
 }
 
 void StabilityGuard::after_step(Simulation& sim) {
     if (sim.neighbors().builds() == builds_seen_) return;
     builds_seen_ = sim.neighbors().builds();
     const std::string refused = check(sim);
-    if (!refused.empty()) throw RunError(refused);
+    if (!refused.empty()) throw RunError(refused, "stability_guard");
 }
 
 std::string StabilityGuard::check(Simulation& sim) {

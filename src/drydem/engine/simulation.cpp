@@ -409,14 +409,19 @@ void Simulation::check_health() {
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (!is_finite(p.position[i]) || !is_finite(p.velocity[i]) || !is_finite(p.omega[i]) ||
             !is_finite(p.force[i]))
-            throw RunError(fmt::format(
-                "blow-up at step {} (t = {:.6g} s): particle {} (species {}, r = {:.4g} um) has a "
-                "non-finite state: position ({:.4g}, {:.4g}, {:.4g}) um, velocity ({:.4g}, {:.4g}, "
-                "{:.4g}) m/s, force ({:.4g}, {:.4g}, {:.4g}) N. Likely cause: time step {:.3g} s "
-                "too large for the stiffest force (see `drydem check`)",
-                step_, time_, p.id[i], int(p.species[i]), p.radius[i] * 1e6, p.position[i].x * 1e6,
-                p.position[i].y * 1e6, p.position[i].z * 1e6, p.velocity[i].x, p.velocity[i].y,
-                p.velocity[i].z, p.force[i].x, p.force[i].y, p.force[i].z, settings_.dt));
+            throw RunError(fmt::format("blow-up at step {} (t = {:.6g} s): particle {} (species "
+                                       "{}, r = {:.4g} um) has a "
+                                       "non-finite state: position ({:.4g}, {:.4g}, {:.4g}) um, "
+                                       "velocity ({:.4g}, {:.4g}, "
+                                       "{:.4g}) m/s, force ({:.4g}, {:.4g}, {:.4g}) N. Likely "
+                                       "cause: time step {:.3g} s "
+                                       "too large for the stiffest force (see `drydem check`)",
+                                       step_, time_, p.id[i], int(p.species[i]), p.radius[i] * 1e6,
+                                       p.position[i].x * 1e6, p.position[i].y * 1e6,
+                                       p.position[i].z * 1e6, p.velocity[i].x, p.velocity[i].y,
+                                       p.velocity[i].z, p.force[i].x, p.force[i].y, p.force[i].z,
+                                       settings_.dt),
+                           "blow_up");
     }
     if (stats_.max_overlap_rel <= settings_.overlap_limit) return;
     // Runaway overlap: find the worst pair (or wall contact), name it, and tell a steady load
@@ -449,11 +454,13 @@ void Simulation::check_health() {
             }
         }
     }
-    throw RunError(fmt::format(
-        "runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller "
-        "radius (limit {:.3g}). {}",
-        step_, time_, what, worst, settings_.overlap_limit,
-        overlap_cause(closing * settings_.dt / r_min)));
+    throw RunError(
+        fmt::format(
+            "runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller "
+            "radius (limit {:.3g}). {}",
+            step_, time_, what, worst, settings_.overlap_limit,
+            overlap_cause(closing * settings_.dt / r_min)),
+        "runaway_overlap");
 }
 
 std::string Simulation::overlap_cause(double closing_per_step) {
