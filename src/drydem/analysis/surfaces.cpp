@@ -41,7 +41,7 @@ std::vector<std::vector<Partner>> ncm_partners(const Structure& s, double cb_gap
     };
     for_each_close_pair(s, cb_gap, [&](std::size_t i, std::size_t j, const Vec3& d) {
         add(i, j, d);
-        add(j, i, -1.0 * d);
+        add(j, i, -d);
     });
     return near;
 }

@@ -183,14 +183,10 @@ void check_time_scales(const Config& c, const FilmRecipe& r, const ScaledParamet
 /// The stability guard's rates on its reference clusters, for both integrators (as `drydem check`
 /// prints them): finite, and the guarded step they give positive.
 void check_guard_rates(const Config& c, const FilmRecipe& r, const std::vector<std::string>& bare) {
-    const double overlap = 0.02 * 0.5 * r.species[std::size_t(r.cb_species())].diameter;
     for (const char* integrator : {"explicit", "semi_implicit"}) {
-        Config ci = c;
-        ci.integrator = integrator;
-        for (const ReferenceCluster& k : reference_clusters(r, overlap)) {
-            const Simulation::StabilityEstimate e =
-                cluster_simulation(ci, r, k).stability_estimate();
-            const double dt = guarded_time_step(ci.time_step_cap(), e);
+        for (const ClusterEstimate& k : guard_on_reference_clusters(c, r, integrator)) {
+            const Simulation::StabilityEstimate& e = k.estimate;
+            const double dt = k.dt;
             if (std::isfinite(e.damping_rate) && std::isfinite(e.stiffness_rate) &&
                 positive_finite(dt))
                 continue;

@@ -59,4 +59,18 @@ Simulation cluster_simulation(const Config& c, const FilmRecipe& recipe, const R
                       make_drying_force_field(c, recipe, scale_parameters(c)), es);
 }
 
+std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const FilmRecipe& recipe,
+                                                         const std::string& integrator) {
+    Config ci = c;
+    ci.integrator = integrator;
+    const double overlap = 0.02 * 0.5 * recipe.species[std::size_t(recipe.cb_species())].diameter;
+    std::vector<ClusterEstimate> out;
+    for (const ReferenceCluster& k : reference_clusters(recipe, overlap)) {
+        const Simulation::StabilityEstimate e =
+            cluster_simulation(ci, recipe, k).stability_estimate();
+        out.push_back({k.name, e, guarded_time_step(ci.time_step_cap(), e)});
+    }
+    return out;
+}
+
 } // namespace drydem

@@ -29,4 +29,17 @@ std::vector<ReferenceCluster> reference_clusters(const FilmRecipe& recipe, doubl
 Simulation cluster_simulation(const Config& c, const FilmRecipe& recipe, const ReferenceCluster& k,
                               double skin = -1.0);
 
+/// The guard's estimate on one reference cluster and the step it gives.
+struct ClusterEstimate {
+    std::string name;
+    Simulation::StabilityEstimate estimate;
+    double dt = 0.0; ///< guarded_time_step(cap, estimate) [s]
+};
+
+/// The guard on every reference cluster, touching at 2 % of the CB radius, with `integrator`
+/// ("explicit" or "semi_implicit") in place of the configured one: what `drydem check` prints and
+/// load_config checks for finiteness.
+std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const FilmRecipe& recipe,
+                                                         const std::string& integrator);
+
 } // namespace drydem
