@@ -23,10 +23,11 @@ struct Riding {
 /// level descending at 6.70 m/s; runs `duration` (several relaxation times 2m/(6π(η/b)r), M-5).
 Riding ride(double r, double rho, double u0, double dt, double duration) {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.8); // no pair laws needed
-    ff.substrate_on = false;     // free particle, far from any wall
-    ff.gravity = {9.81e6, 1030}; // g k / b, NMP buoyancy (M-5, M-7)
-    ff.drag = {0.1801, true};    // η / b with rotation (M-5, C-18)
-    ff.capillary = {0.041 * 9e3, 40.0 * std::numbers::pi / 180.0}; // σ s_cap, θ (M-6)
+    ff.remove_substrate();                               // free particle, far from any wall
+    ff.set_body_law<GravityBuoyancyLaw>({9.81e6, 1030}); // g k / b, NMP buoyancy (M-5, M-7)
+    ff.set_body_law<StokesDragLaw>({0.1801, true});      // η / b with rotation (M-5, C-18)
+    ff.set_body_law<CapillaryFrontLaw>(
+        {0.041 * 9e3, 40.0 * std::numbers::pi / 180.0}); // σ s_cap, θ (M-6)
     const double z0 = 60e-6, level0 = z0 + u0 * r;
     ParticleStore p;
     p.add(1, 0, r, rho, {20e-6, 20e-6, z0});

@@ -3,6 +3,7 @@
 // the serialized state continues bit for bit like the one that never stopped, with every drying
 // force law on (contact histories, lubrication, capillary front, substrate); damaged or foreign
 // files are refused with a clear error.
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/drying/liquid_level.hpp"
@@ -94,7 +95,7 @@ TEST(Checkpoint, RestoredEngineContinuesBitForBit) {
         EXPECT_TRUE(same_bits(pa.velocity, pb.velocity)) << threads << " threads";
         EXPECT_TRUE(same_bits(pa.omega, pb.omega)) << threads << " threads";
         EXPECT_TRUE(same_bits(pa.force, pb.force)) << threads << " threads";
-        EXPECT_TRUE(same_bits(pa.wall_history, pb.wall_history)) << threads << " threads";
+        EXPECT_TRUE(same_bits(a.body_states(), b.body_states())) << threads << " threads";
         EXPECT_EQ(a.time(), b.time());
         EXPECT_EQ(a.liquid_level(), b.liquid_level());
         EXPECT_EQ(a.neighbors().builds(), b.neighbors().builds());
@@ -142,23 +143,28 @@ TEST(Checkpoint, FileIsVerifiedAndDamageIsRefused) {
 
 // The engine state starts with the pair laws' layout (names and state sizes): a checkpoint written
 // by a build with another list of laws is refused before its pair states are misread.
-TEST(Checkpoint, AnotherListOfPairLawsIsRefused) {
-    const std::string other = "hertz_mindlin:24;binder_bridge:16;";
-    BinaryWriter w;
-    w.vec(std::vector<char>(other.begin(), other.end()));
-    const std::vector<unsigned char>& bytes = w.bytes();
-    BinaryReader r(bytes, "state.bin");
-    try {
-        (void)read_engine_state(r);
-        ADD_FAILURE() << "a checkpoint of another list of pair laws was accepted";
-    } catch (const InputError& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find("binder_bridge"), std::string::npos) << what;
-        EXPECT_NE(what.find(std::string(PairLaws::layout())), std::string::npos) << what;
+TEST(Checkpoint, AnotherListOfLawsIsRefused) {
+    // Another pair-law list, then another body-law list (a calendering plate added).
+    const std::string pair = "pair " + std::string(PairLaws::layout()),
+                      body = " body " + std::string(BodyLaws::layout());
+    for (const std::string& other : {"pair hertz_mindlin:24;binder_bridge:16;" + body,
+                                     pair + " body substrate_contact:24;plate:8;"}) {
+        BinaryWriter w;
+        w.vec(std::vector<char>(other.begin(), other.end()));
+        BinaryReader r(w.bytes(), "state.bin");
+        try {
+            (void)read_engine_state(r);
+            ADD_FAILURE() << "a checkpoint of another list of laws was accepted: " << other;
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(other), std::string::npos) << what;
+            EXPECT_NE(what.find(law_layout_text()), std::string::npos) << what;
+        }
     }
     // The layout of this build reads back as its own.
     BinaryWriter ok;
-    const std::string_view mine = PairLaws::layout();
+    const std::string mine = law_layout_text();
+    EXPECT_EQ(mine, pair + body);
     ok.vec(std::vector<char>(mine.begin(), mine.end()));
     BinaryReader r2(ok.bytes(), "state.bin");
     try {

@@ -18,7 +18,7 @@ ParticleStore two_spheres(double gap, double r1 = r_cb, double r2 = r_cb) {
 
 ForceField contact_only(double e, double mu) {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, e, mu);
-    ff.substrate_on = false;
+    ff.remove_substrate();
     return ff;
 }
 
@@ -110,7 +110,7 @@ TEST(MomentumConservation, DenseFrictionalPeriodicBox) {
                 ++id;
             }
     ForceField ff = uniform_contact_force_field(2, 142e9, 0.3, 0.5, 0.8);
-    ff.substrate_on = false;
+    ff.remove_substrate();
     Simulation sim(std::move(p), Box{26 * spacing, 26 * spacing}, ff, {1e-11, 0.1e-6, 2});
     const Vec3 m0 = sim.momentum();
     double scale = 0;

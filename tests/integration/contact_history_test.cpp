@@ -24,7 +24,7 @@ std::size_t index_of(const ParticleStore& p, std::uint32_t id) {
 ForceField cohesive_contact() {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.8);
     law<VanDerWaalsLaw>(ff.pair[0]) = {4.64e-13, 5e-9, 0.75e-6};
-    ff.substrate_on = false;
+    ff.remove_substrate();
     return ff;
 }
 

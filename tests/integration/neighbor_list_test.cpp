@@ -3,6 +3,7 @@
 // paper's 1:7.6 size ratio (CB r = 0.75 µm, NCM r = 3.25 ... 5.675 µm) in a 40 × 40 µm periodic
 // box with the drying force field's ranges (lubrication r_L, van der Waals cut-off r_L), and the
 // determinism of the engine (M-9.1: fixed summation order for a fixed thread count).
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/simulation.hpp"
 #include "drydem/setup/insertion.hpp"

@@ -21,9 +21,9 @@ constexpr double kRhoF = 1030;   // NMP
 /// (translation and rotation, C-18), contact law irrelevant (no partner).
 Simulation lone_sphere(double r, double rho, double dt, const Vec3& omega0 = {}) {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.8);
-    ff.substrate_on = false;
-    ff.drag = {kEtaB, true};
-    ff.gravity = {kG, kRhoF};
+    ff.remove_substrate();
+    ff.set_body_law<StokesDragLaw>({kEtaB, true});
+    ff.set_body_law<GravityBuoyancyLaw>({kG, kRhoF});
     ParticleStore p;
     p.add(1, 0, r, rho, {20e-6, 20e-6, 100e-6});
     p.omega[0] = omega0;
@@ -98,8 +98,8 @@ TEST(Settling, PolydisperseGasSettlesIntoPackedBed) {
         top0 = std::max(top0, gas.position[i].z + gas.radius[i]);
     }
     ForceField ff = uniform_contact_force_field(6, 1e10, 0.3, 0.5, 0.8);
-    ff.gravity = {9.81e6, 0.0};
-    ff.drag = {0.18, false};
+    ff.set_body_law<GravityBuoyancyLaw>({9.81e6, 0.0});
+    ff.set_body_law<StokesDragLaw>({0.18, false});
     Simulation sim(std::move(gas), box, ff, {2e-10, 0.3e-6, 1});
     double ke_peak = 0, min_z_over_r = INFINITY, max_top = 0;
     const int steps = 450000; // 90 µs: the last rearrangements end near 85 µs

@@ -10,6 +10,7 @@
 // (threshold measured between 8e-12 and 9e-12 s). M-9.2's "worst plausible case" (three
 // neighbours, Δt Λ ≈ 1.5) underestimates dense CB. The test therefore runs V-14 at the step the
 // drying run's "adapt" guard picks (1.5/λ_max, here ≈ 5.5e-12 s).
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/rng.hpp"
 #include "drydem/drying/scaling.hpp"

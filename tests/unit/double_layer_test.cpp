@@ -3,6 +3,7 @@
 // contract (forces/pair_law.hpp): its force against the derivative of its HHF energy, its limits,
 // its stiffness, its config mapping, and energy conservation of a head-on approach through the
 // full engine.
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/simulation.hpp"
 #include "drydem/forces/force_field.hpp"
@@ -86,20 +87,25 @@ TEST(DoubleLayer, StiffnessIsMinusTheForceDerivativeAtTheClosestApproach) {
 
 TEST(DoubleLayer, ConfigMappingScalesLikeVanDerWaalsAndDefaultsToTheLubricationRange) {
     Config c;
-    SizeClass cb{1.5e-6, kRho, 0, 0, true}, ncm{6.5e-6, 4740, 0, 0, false};
-    EXPECT_EQ(DoubleLayerLaw::from_config(c, cb, ncm).amplitude, 0.0); // off by default
+    const FilmRecipe r = make_recipe(c);
+    const int cb = r.cb_species(), ncm = cb - 1;
+    const double r_cb = 0.5 * r.species[std::size_t(cb)].diameter,
+                 r_ncm = 0.5 * r.species[std::size_t(ncm)].diameter;
+    EXPECT_EQ(
+        law<DoubleLayerLaw>(make_drying_force_field(c, r, scale_parameters(c)).pair_params(cb, ncm))
+            .amplitude,
+        0.0); // off by default
     c.double_layer = true;
-    // The law receives the simulated values (drying/scaling.cpp): the strength × the Hamaker factor.
-    const Config sim = simulated_config(c, scale_parameters(c));
-    const DoubleLayerParams p = DoubleLayerLaw::from_config(sim, cb, ncm);
+    // The law receives the simulated values (law_parameters.cpp after scaling.cpp): the strength
+    // × the Hamaker factor.
+    const ForceField ff = make_drying_force_field(c, r, scale_parameters(c));
+    const DoubleLayerParams& p = law<DoubleLayerLaw>(ff.pair_params(cb, ncm));
     const double expected = 4 * std::numbers::pi * 32.2 * 8.8541878128e-12 * 0.025 * 0.025 * 1e7;
     EXPECT_NEAR(p.amplitude, expected, 1e-12 * expected);
     EXPECT_DOUBLE_EQ(p.debye_length, 100e-9);
-    EXPECT_NEAR(p.cutoff_gap, 2 * 0.75e-6 * 3.25e-6 / 4.0e-6, 1e-18); // r_L = 2R*
-    // Through the list: the pair table gets it, and the neighbour range does not grow.
-    const PairParams pp = PairLaws::from_config(sim, cb, ncm);
-    EXPECT_EQ(law<DoubleLayerLaw>(pp).amplitude, p.amplitude);
-    EXPECT_DOUBLE_EQ(interaction_range(pp, 0.75e-6, 3.25e-6), p.cutoff_gap);
+    EXPECT_NEAR(p.cutoff_gap, 2 * r_cb * r_ncm / (r_cb + r_ncm), 1e-18); // r_L = 2R*
+    // The neighbour range does not grow: the lubrication range r_L bounds the pair's reach.
+    EXPECT_DOUBLE_EQ(interaction_range(ff.pair_params(cb, ncm), r_cb, r_ncm), p.cutoff_gap);
 }
 
 // Two CB spheres approach head-on with only the repulsion acting (no contact damping, no
@@ -107,7 +113,7 @@ TEST(DoubleLayer, ConfigMappingScalesLikeVanDerWaalsAndDefaultsToTheLubricationR
 // energy stays constant along the way.
 TEST(DoubleLayer, HeadOnApproachConservesEnergyThroughTheEngine) {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 1.0, 0.0);
-    ff.substrate_on = false;
+    ff.remove_substrate();
     const DoubleLayerParams p = params();
     law<DoubleLayerLaw>(ff.pair[0]) = p;
     ParticleStore s;

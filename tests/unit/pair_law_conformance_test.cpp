@@ -10,6 +10,7 @@
 //   - stiffness() is -dF/dx of the conservative part: normal by central differences in the gap
 //     (in overlap at least that: a bound, as the guard needs it), sliding by a tangential step of
 //     the history.
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/forces/force_field.hpp"
 #include <gtest/gtest.h>

@@ -146,22 +146,25 @@ TEST(Resistance, BodyLawsAreTheirResistance) {
     const HertzMindlinParams hm = mix_hertz_mindlin(142e9, 0.3, 70e9, 0.33, 0.5, 0.8, 0.0);
     const double r = 0.75e-6, m = 2.1e-15;
     for (double z : {0.97 * r, 1.05 * r, 1.5 * r, 2.5 * r}) {
-        BodyResistance contact{};
+        // Through the body-law list: the three dissipative laws, the conservative ones off.
+        BodyParams bp{};
+        law<SubstrateContactLaw>(bp) = hm;
+        law<SubstrateLubricationLaw>(bp) = wl;
+        law<StokesDragLaw>(bp) = drag;
+        BodyResistance reported{};
         auto body = [&](const Eigen::VectorXd& u) {
-            const Vec3 v = part(u, 0), w = part(u, 1);
-            Vec3 xi{};
-            contact = BodyResistance{};
-            BodyForce f = substrate_lubrication(z, r, v, w, wl);
-            f += stokes_drag(r, v, w, drag);
-            f += substrate_contact(z, r, m, v, w, hm, xi, 0.0, &contact);
+            BodyState s{};
+            reported = BodyResistance{};
+            const BodyForce f = BodyLaws::force({{0, 0, z}, part(u, 0), part(u, 1), r, m, 0, 0, 0},
+                                                bp, s, 0.0, &reported);
             Eigen::VectorXd out(6);
             out << f.force.x, f.force.y, f.force.z, f.torque.x, f.torque.y, f.torque.z;
             return out;
         };
         const Mat law = resistance_matrix(body, 6);
-        BodyResistance c = substrate_lubrication_resistance(z, r, wl);
-        c += stokes_drag_resistance(r, drag);
-        c += contact;
+        const BodyResistance c = BodyLaws::resistance({{0, 0, z}, {}, {}, r, m, 0, 0, 0}, bp);
+        EXPECT_NEAR(reported.normal, c.normal, 1e-12 * c.normal) << "z/r " << z / r;
+        EXPECT_NEAR(reported.coupling, c.coupling, 1e-12 * std::abs(c.coupling) + 1e-30);
         const Mat mine = resistance_matrix(
             [&](const Eigen::VectorXd& u) {
                 const BodyForce f = resistance_force(c, part(u, 0), part(u, 1));

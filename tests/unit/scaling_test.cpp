@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The time-scaling scheme (model.md M-7 table) and the drying force field built from it (species
 // pair table M-3, M-4.1 / C-13 / C-15; substrate V-2; capillary M-6).
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/scaling.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -84,31 +85,33 @@ TEST(Scaling, DryingForceFieldParticleForces) {
     const FilmRecipe r = make_recipe(c);
     const ForceField ff = make_drying_force_field(c, r, scale_parameters(c));
     // V-2: 142 GPa / 0.3 particles on the aluminium substrate (C-8).
-    EXPECT_TRUE(ff.substrate_on);
-    ASSERT_EQ(ff.substrate.size(), 6u);
-    for (const HertzMindlinParams& w : ff.substrate) {
+    EXPECT_TRUE(ff.substrate_on());
+    ASSERT_EQ(ff.body.size(), 6u);
+    for (const BodyParams& b : ff.body) {
+        const HertzMindlinParams& w = law<SubstrateContactLaw>(b);
         expect_rel(w.e_star, 5.2251e10, 1e-4);
         expect_rel(w.g_star, 1.0572e10, 1e-4);
-        EXPECT_DOUBLE_EQ(w.friction, 0.8); // C-6
+        EXPECT_DOUBLE_EQ(w.friction, 0.8);                            // C-6
+        expect_rel(law<SubstrateLubricationLaw>(b).viscosity, 1.801); // M-4.4, C-17
+        expect_rel(law<StokesDragLaw>(b).viscosity, 0.1801);          // M-5
+        EXPECT_TRUE(law<StokesDragLaw>(b).rotational);                // C-18
+        expect_rel(law<GravityBuoyancyLaw>(b).gravity, 9.81e6);
+        expect_rel(law<GravityBuoyancyLaw>(b).fluid_density, 1030);
     }
-    expect_rel(ff.substrate_lubrication.viscosity, 1.801); // M-4.4, C-17
-    expect_rel(ff.drag.viscosity, 0.1801);                 // M-5
-    EXPECT_TRUE(ff.drag.rotational);                       // C-18
-    expect_rel(ff.gravity.gravity, 9.81e6);
-    expect_rel(ff.gravity.fluid_density, 1030);
     // M-6: the law receives σ s_cap as simulated; stiffness 2πσ s_cap = 2318 N/m.
-    expect_rel(ff.capillary.surface_tension, 369.0);
-    expect_rel(ff.capillary.contact_angle, 40.0 * std::numbers::pi / 180.0);
-    EXPECT_NEAR(capillary_stiffness(ff.capillary), 2318.0, 0.5);
+    const CapillaryParams& cap = law<CapillaryFrontLaw>(ff.body_params(0));
+    expect_rel(cap.surface_tension, 369.0);
+    expect_rel(cap.contact_angle, 40.0 * std::numbers::pi / 180.0);
+    EXPECT_NEAR(capillary_stiffness(cap), 2318.0, 0.5);
     // Largest push on a CB: 2πσ s_cap r cos²(θ/2) = 2318.5 × 0.75e-6 × 0.88302 N.
-    expect_rel(capillary_max_force(0.75e-6, ff.capillary), 2318.495 * 0.75e-6 * 0.8830222, 1e-5);
+    expect_rel(capillary_max_force(0.75e-6, cap), 2318.495 * 0.75e-6 * 0.8830222, 1e-5);
 
     Config no_lub = c;
     no_lub.lubrication = false;
     no_lub.substrate_lubrication = false;
     const ForceField off = make_drying_force_field(no_lub, r, scale_parameters(no_lub));
     EXPECT_EQ(law<LubricationLaw>(off.pair_params(5, 5)).viscosity, 0.0);
-    EXPECT_EQ(off.substrate_lubrication.viscosity, 0.0);
+    EXPECT_EQ(law<SubstrateLubricationLaw>(off.body_params(0)).viscosity, 0.0);
 }
 
 // The force_ratio scheme (M-7): every conservative force × k/b, every viscosity / b, moduli × e.
@@ -135,8 +138,8 @@ TEST(Scaling, ForceRatioScheme) {
     const int cb = r.cb_species();
     expect_rel(law<VanDerWaalsLaw>(ff.pair_params(cb, cb)).hamaker, 4.64e-16);
     expect_rel(law<LubricationLaw>(ff.pair_params(cb, 0)).viscosity, 0.01801);
-    expect_rel(ff.substrate_lubrication.viscosity, 0.01801);
-    expect_rel(ff.capillary.surface_tension, 410.0);
+    expect_rel(law<SubstrateLubricationLaw>(ff.body_params(0)).viscosity, 0.01801);
+    expect_rel(law<CapillaryFrontLaw>(ff.body_params(0)).surface_tension, 410.0);
     expect_rel(law<HertzMindlinLaw>(ff.pair_params(cb, cb)).e_star, 142e9 * 20 / (2 * (1 - 0.09)));
 }
 

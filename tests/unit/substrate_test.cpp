@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Particle-substrate contact (model.md M-2.6, V-2) and lubrication (M-4.4, V-8).
-#include "drydem/forces/substrate.hpp"
+#include "drydem/forces/substrate_contact.hpp"
+#include "drydem/forces/substrate_lubrication.hpp"
 #include <gtest/gtest.h>
 #include "expect_rel.hpp"
 #include <cmath>
@@ -19,6 +20,18 @@ using testing_support::expect_rel;
 
 // Aluminium (C-8) against NCM/CB (E = 142 GPa, ν = 0.3), e = 0.5, μ_s = 0.8 (C-6).
 HertzMindlinParams wall() { return mix_hertz_mindlin(70e9, 0.33, 142e9, 0.3, 0.5, 0.8, 0.0); }
+
+/// The contact through the law's own add_force (body_law.hpp), its spring ξ in `xi`.
+BodyForce substrate_contact(double z, double r, double m, const Vec3& v, const Vec3& omega,
+                            const HertzMindlinParams& p, Vec3& xi, double dt,
+                            BodyResistance* damping = nullptr) {
+    SubstrateContactLaw::State s{xi};
+    BodyForce f{};
+    SubstrateContactLaw::add_force({{0.0, 0.0, z}, v, omega, r, m, 0.0, 0.0, 0.0}, p, s, dt, f,
+                                   damping);
+    xi = s.spring;
+    return f;
+}
 
 TEST(SubstrateContact, EffectiveModuliV2) {
     expect_rel(wall().e_star, 5.2251e10);

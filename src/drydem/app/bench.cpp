@@ -30,9 +30,8 @@ int run_bench(const BenchOptions& o) {
     }
     ForceField ff = uniform_contact_force_field(types, o.youngs_modulus, o.poisson_ratio,
                                                 o.restitution, o.friction);
-    ff.gravity.gravity = o.gravity;
-    ff.drag.viscosity = o.viscosity;
-    ff.drag.rotational = false;
+    ff.set_body_law<GravityBuoyancyLaw>({o.gravity, 0.0});
+    ff.set_body_law<StokesDragLaw>({o.viscosity, false});
     EngineSettings es;
     es.dt = o.dt;
     es.skin = o.skin;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `drydem check`: every derived quantity of a configuration (counts, wet height, scaled
 // parameters, time step and its limits, memory and cost estimate).
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/app/commands.hpp"
 #include "drydem/core/sphere.hpp"
 #include "drydem/analysis/analyze.hpp"
@@ -112,7 +113,7 @@ void print_check(const Config& c) {
                s.hamaker_ncm_cb[1], s.hamaker_ncm_ncm[1]);
     fmt::print("  surface tension x factor  {:g} -> {:g} N/m (capillary stiffness {:.4g} N/m)\n",
                s.surface_tension_physical, s.surface_tension_scaled,
-               capillary_stiffness(ff.capillary));
+               capillary_stiffness(law<CapillaryFrontLaw>(ff.body_params(0))));
     fmt::print("  dryer zone duration       {:g} s -> {:g} s\n", s.zone_duration_physical,
                s.zone_duration_scaled);
     for (std::size_t z = 0; z < s.level_speeds_scaled.size(); ++z)

@@ -29,7 +29,6 @@ void ParticleStore::permute(const std::vector<std::uint32_t>& order) {
     apply(omega, order, sv);
     apply(force, order, sv);
     apply(torque, order, sv);
-    apply(wall_history, order, sv);
 }
 
 } // namespace drydem

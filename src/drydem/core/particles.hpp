@@ -24,7 +24,6 @@ struct ParticleStore {
     std::vector<Vec3> omega;           ///< angular velocity [rad/s]
     std::vector<Vec3> force;           ///< [N]
     std::vector<Vec3> torque;          ///< [N m]
-    std::vector<Vec3> wall_history;    ///< tangential spring of the substrate contact [m] (M-2.3)
 
     [[nodiscard]] std::size_t size() const { return id.size(); }
 
@@ -43,7 +42,6 @@ struct ParticleStore {
         omega.push_back({});
         force.push_back({});
         torque.push_back({});
-        wall_history.push_back({});
     }
 
     /// Reorders every per-particle array so that new index k holds old index order[k].

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
@@ -384,7 +385,7 @@ TimeScales time_scales(const Config& c, const FilmRecipe& r, const ScaledParamet
         hertz_contact_time(t.mass / 2, rad / 2, hm.e_star, s.level_speeds_scaled.front());
     t.drag_relaxation =
         2 * stokes_relaxation_time(t.mass, rad, StokesDragParams{s.drag_viscosity_scaled});
-    const double k_cap = capillary_stiffness(ff.capillary);
+    const double k_cap = capillary_stiffness(law<CapillaryFrontLaw>(ff.body_params(smallest)));
     t.capillary_period = k_cap > 0 ? 2 * std::numbers::pi * std::sqrt(t.mass / k_cap) : INFINITY;
     return t;
 }

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/dimensionless_groups.hpp"
 #include "drydem/core/sphere.hpp"
 #include "drydem/drying/derived_checks.hpp"
@@ -48,9 +49,11 @@ Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_sp
     const SizeClass &n = recipe.species[std::size_t(ncm)], &c = recipe.species[std::size_t(cb)];
     const double r_n = 0.5 * n.diameter, r_c = 0.5 * c.diameter, m_n = mass_of(n), m_c = mass_of(c);
     const double U = level_speed, H = thickness;
-    auto cap = [&](double r) { return capillary_max_force(r, ff.capillary); };
+    const BodyParams &body_n = ff.body_params(ncm), &body_c = ff.body_params(cb);
+    const CapillaryParams& capillary = law<CapillaryFrontLaw>(body_c);
+    auto cap = [&](double r) { return capillary_max_force(r, capillary); };
     Groups g;
-    g.capillary_drag = stokes_drag_coefficient(r_c, ff.drag) * U / cap(r_c);
+    g.capillary_drag = stokes_drag_coefficient(r_c, law<StokesDragLaw>(body_c)) * U / cap(r_c);
     // Lubrication at the gap where its resistance freezes (κ_c r_L), CB-CB.
     const LubricationParams& lub = law<LubricationLaw>(ff.pair_params(cb, cb));
     const double r_l = lubrication_radius(r_c, r_c);
@@ -63,8 +66,8 @@ Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_sp
         push_per_area += 2.0 * double(s.count) * 0.5 * s.diameter * cap(0.5 * s.diameter);
     push_per_area /= recipe.base_area * H;
     g.push = g.capillary_drag * H / push_length(recipe);
-    g.stokes_ncm = stokes_relaxation_time(m_n, r_n, ff.drag) * U / r_n;
-    g.stokes_cb = stokes_relaxation_time(m_c, r_c, ff.drag) * U / r_c;
+    g.stokes_ncm = stokes_relaxation_time(m_n, r_n, law<StokesDragLaw>(body_n)) * U / r_n;
+    g.stokes_cb = stokes_relaxation_time(m_c, r_c, law<StokesDragLaw>(body_c)) * U / r_c;
     g.inertial = (U / H) * n.diameter * std::sqrt(n.density / push_per_area);
     // Surface forces at contact (the law holds them at h_min).
     const PairGeometry cc = at_gap(r_c, r_c, 0.0, m_c, m_c), nc = at_gap(r_n, r_c, 0.0, m_n, m_c);
@@ -74,17 +77,17 @@ Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_sp
         norm(van_der_waals(nc, law<VanDerWaalsLaw>(ff.pair_params(ncm, cb))).force_i);
     g.vdw_capillary_cb_cb = vdw_cc / cap(r_c);
     g.vdw_capillary_ncm_cb = vdw_nc / cap(r_c);
-    g.bond_ncm = std::abs(gravity_buoyancy(r_n, n.density, ff.gravity).z) / cap(r_n);
+    g.bond_ncm =
+        std::abs(gravity_buoyancy(r_n, n.density, law<GravityBuoyancyLaw>(body_n)).z) / cap(r_n);
     // Expected Hertz overlaps under the forces that press these contacts.
     g.overlap_cb_cb =
         hertz_overlap(vdw_cc, cc.r_eff, law<HertzMindlinLaw>(ff.pair_params(cb, cb)).e_star) / r_c;
     g.overlap_ncm_cb =
         hertz_overlap(cap(r_n), nc.r_eff, law<HertzMindlinLaw>(ff.pair_params(ncm, cb)).e_star) /
         r_c;
+    const double e_substrate = law<SubstrateContactLaw>(body_n).e_star;
     g.overlap_ncm_substrate =
-        ff.substrate.empty()
-            ? 0.0
-            : hertz_overlap(cap(r_n), r_n, ff.substrate[std::size_t(ncm)].e_star) / r_n;
+        e_substrate > 0.0 ? hertz_overlap(cap(r_n), r_n, e_substrate) / r_n : 0.0;
     return g;
 }
 

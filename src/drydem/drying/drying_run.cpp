@@ -8,6 +8,7 @@
 //      each neighbour rebuild; every output after each step; stop where asked to.
 //   4. end: the results (thickness, density, porosity; M-8.4) and every output's end.
 // The outputs are observers (run_outputs.cpp, run_summary.cpp) called from one fixed list.
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/core/error.hpp"

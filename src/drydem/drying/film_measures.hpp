@@ -46,8 +46,9 @@ inline LevelLoad level_load(const ParticleStore& p, const ForceField& ff, double
     double drag = 0.0, push = 0.0, d = 0.0, rho = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double r = p.radius[i], z = p.position[i].z;
-        if (z < level) drag += stokes_drag_coefficient(r, ff.drag);
-        if (std::abs(level - z) < r) push += capillary_max_force(r, ff.capillary);
+        const BodyParams& body = ff.body_params(p.species[i]);
+        if (z < level) drag += stokes_drag_coefficient(r, law<StokesDragLaw>(body));
+        if (std::abs(level - z) < r) push += capillary_max_force(r, law<CapillaryFrontLaw>(body));
         if (2.0 * r > d) {
             d = 2.0 * r;
             rho = p.density[i];

@@ -94,48 +94,6 @@ nlohmann::json to_json(const ScaledParameters& s) {
     };
 }
 
-ForceField make_drying_force_field(const Config& config, const FilmRecipe& recipe,
-                                   const ScaledParameters& s) {
-    const Config c = simulated_config(config, s); // the laws see simulated values only
-    ForceField ff;
-    const int n = int(recipe.species.size());
-    ff.species_count = n;
-    ff.pair.resize(std::size_t(n) * n);
-    // Each law maps its own keys (its from_config, beside the law).
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j)
-            ff.pair[std::size_t(i) * n + j] =
-                PairLaws::from_config(c, recipe.species[i], recipe.species[j]);
-    ff.substrate_on = true;
-    for (int i = 0; i < n; ++i)
-        ff.substrate.push_back(mix_hertz_mindlin(
-            HertzMindlinLaw::youngs_modulus(c, recipe.species[i]), c.poisson_ratio,
-            c.substrate_youngs_modulus, c.substrate_poisson_ratio, c.restitution,
-            c.substrate_friction, c.rolling_friction));
-    ff.substrate_lubrication.viscosity = c.substrate_lubrication ? s.lubrication_viscosity : 0.0;
-    ff.substrate_lubrication.kappa_c = c.kappa_c;
-    ff.drag.viscosity = s.drag_viscosity_scaled;
-    ff.drag.rotational = true; // C-18
-    ff.gravity.gravity = s.gravity_scaled;
-    ff.gravity.fluid_density = c.solvent_density;
-    ff.capillary.surface_tension = s.surface_tension_scaled;
-    ff.capillary.contact_angle = c.contact_angle;
-    return ff;
-}
-
-PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe) {
-    PairReach widest;
-    for (int i = 0; i < ff.species_count; ++i)
-        for (int j = 0; j < ff.species_count; ++j) {
-            const double d_i = recipe.species[std::size_t(i)].diameter,
-                         d_j = recipe.species[std::size_t(j)].diameter;
-            const double reach =
-                0.5 * (d_i + d_j) + interaction_range(ff.pair_params(i, j), 0.5 * d_i, 0.5 * d_j);
-            if (reach > widest.reach) widest = {reach, d_i, d_j};
-        }
-    return widest;
-}
-
 Integrator integrator_of(const Config& c) {
     return c.integrator == "explicit" ? Integrator::explicit_verlet : Integrator::semi_implicit;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Time scaling (docs/model.md M-7) in one place: scale_parameters maps the physical parameters and
 // the scheme to the values the laws receive, and records both; simulated_config hands those values
-// to the laws' from_config, which never see a factor. Two schemes:
+// to the laws' parameter mapping (law_parameters.cpp); the laws never see a factor. Two schemes:
 //   paper        level speed × k, time ÷ k, gravity × k/b, Stokes viscosity ÷ b, Hamaker × k_A
 //                (0 = k), capillary force × s_cap (0 = 9e3), lubrication at full viscosity (C-17)
 //   force_ratio  level speed × k, time ÷ k, every viscosity ÷ b, every conservative force
@@ -11,7 +11,6 @@
 // and in both the Young's moduli × e (scaling.stiffness_factor).
 #pragma once
 #include "drydem/engine/simulation.hpp"
-#include "drydem/forces/force_field.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <nlohmann/json_fwd.hpp>
@@ -45,24 +44,11 @@ ScaledParameters scale_parameters(const Config& c);
 
 /// The configuration as the laws receive it: every law parameter replaced by its simulated value
 /// (Hamaker constants, surface tension, Young's moduli, the lubrication viscosity in `viscosity`,
-/// the double layer's strength in its permittivity). Only the laws' from_config read it.
+/// the double layer's strength in its permittivity). Only the laws' parameter mapping (law_parameters.cpp) reads it.
 Config simulated_config(const Config& c, const ScaledParameters& s);
 
 /// numerics.integrator as the engine's enum.
 Integrator integrator_of(const Config& c);
 nlohmann::json to_json(const ScaledParameters& s);
-
-/// Species pair table and particle forces of the drying simulation, from the recipe's species
-/// (NCM classes, then CB) and the scaled parameters.
-ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
-                                   const ScaledParameters& s);
-
-/// The widest pair of the film's species: the largest centre distance r_i + r_j + the pair laws'
-/// range (interaction_range, as the neighbour list reaches) over every species pair [m], and the
-/// two diameters of that pair.
-struct PairReach {
-    double reach = 0.0, diameter_i = 0.0, diameter_j = 0.0;
-};
-PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe);
 
 } // namespace drydem

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/stability_clusters.hpp"
 #include <algorithm>
 #include <cmath>

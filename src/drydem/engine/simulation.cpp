@@ -10,9 +10,11 @@
 namespace drydem {
 
 Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings)
-    : p_(std::move(particles)), box_(box), ff_(std::move(forces)), settings_(settings),
-      nl_(settings.skin, settings.threads), liquid_level_(settings.initial_liquid_level) {
+    : p_(std::move(particles)), body_state_(p_.size()), box_(box), ff_(std::move(forces)),
+      settings_(settings), nl_(settings.skin, settings.threads),
+      liquid_level_(settings.initial_liquid_level) {
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
+    substrate_on_ = ff_.substrate_on();
     allocate_integrator();
     stats_.layer_top = p_.size() ? -INFINITY : 0.0;
     for (std::size_t i = 0; i < p_.size(); ++i) {
@@ -23,12 +25,16 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
 }
 
 Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSettings settings)
-    : p_(std::move(state.particles)), box_(box), ff_(std::move(forces)), settings_(settings),
-      nl_(settings.skin, settings.threads), step_(state.step), time_(state.time),
-      liquid_level_(state.liquid_level), force_rebuild_(state.force_rebuild), stats_(state.stats),
+    : p_(std::move(state.particles)), body_state_(std::move(state.body_state)), box_(box),
+      ff_(std::move(forces)), settings_(settings), nl_(settings.skin, settings.threads),
+      step_(state.step), time_(state.time), liquid_level_(state.liquid_level),
+      force_rebuild_(state.force_rebuild), stats_(state.stats),
       rebuilds_since_sort_(state.rebuilds_since_sort) {
     settings_.dt = state.dt;
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
+    substrate_on_ = ff_.substrate_on();
+    if (body_state_.size() != p_.size())
+        throw InputError("checkpoint: the body laws' states do not fit the particles");
     nl_.restore(std::move(state.neighbors));
     allocate_integrator();
     if (semi_implicit()) {
@@ -78,8 +84,8 @@ std::vector<std::int32_t> Simulation::coordination() const {
 }
 
 EngineState Simulation::state() const {
-    return {p_,     nl_.state(), step_,  time_,          liquid_level_,       settings_.dt,
-            stats_, accel_,      alpha_, force_rebuild_, rebuilds_since_sort_};
+    return {p_,           body_state_, nl_.state(), step_,  time_,          liquid_level_,
+            settings_.dt, stats_,      accel_,      alpha_, force_rebuild_, rebuilds_since_sort_};
 }
 
 void Simulation::rebuild_neighbors() {
@@ -100,19 +106,22 @@ void Simulation::rebuild_neighbors() {
                                  p_.radius[j]);
     };
     const double t0 = omp_get_wtime();
-    if (sort && semi_implicit()) {
-        // The body resistances were written with the particle forces, before this re-sort:
-        // carry them to the new storage order by id.
+    if (sort) {
+        // The body laws' states and (semi-implicit) resistances are kept in storage order: carry
+        // them to the new order by id.
         std::vector<std::uint32_t> ids = p_.id;
         nl_.build(p_, box_, range, owner_range, sort);
         std::uint32_t max_id = 0;
         for (std::uint32_t id : ids) max_id = std::max(max_id, id);
         std::vector<std::uint32_t> old_index(std::size_t(max_id) + 1);
         for (std::size_t k = 0; k < ids.size(); ++k) old_index[ids[k]] = std::uint32_t(k);
-        std::vector<BodyResistance> moved(p_.size());
-        for (std::size_t k = 0; k < p_.size(); ++k)
-            moved[k] = body_resistance_[old_index[p_.id[k]]];
-        body_resistance_.swap(moved);
+        auto carry = [&](auto& v) {
+            std::remove_reference_t<decltype(v)> moved(p_.size());
+            for (std::size_t k = 0; k < p_.size(); ++k) moved[k] = v[old_index[p_.id[k]]];
+            v.swap(moved);
+        };
+        carry(body_state_);
+        if (semi_implicit()) carry(body_resistance_);
     } else {
         nl_.build(p_, box_, range, owner_range, sort);
     }
@@ -333,12 +342,13 @@ void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& 
         body_resistance_[i] = BodyResistance{};
         resistance = &body_resistance_[i];
     }
-    const BodyForce b = particle_forces(ff_, p.species[i], p.radius[i], p.density[i], p.mass[i],
-                                        p.position[i], p.velocity[i], p.omega[i], liquid_level_,
-                                        p.wall_history[i], settings_.dt, resistance);
+    const BodyGeometry g{p.position[i], p.velocity[i], p.omega[i],    p.radius[i],
+                         p.mass[i],     p.density[i],  liquid_level_, 0.0};
+    const BodyForce b =
+        BodyLaws::force(g, ff_.body_params(p.species[i]), body_state_[i], settings_.dt, resistance);
     p.force[i] = b.force;
     p.torque[i] = b.torque;
-    if (ff_.substrate_on && p.position[i].z < p.radius[i]) {
+    if (substrate_on_ && p.position[i].z < p.radius[i]) {
         ++wall_contacts;
         wall_overlap = std::max(wall_overlap, 1.0 - p.position[i].z / p.radius[i]);
     }
@@ -429,7 +439,7 @@ void Simulation::check_health() {
     double worst = 0.0, closing = 0.0, r_min = 0.0;
     std::string what;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        if (ff_.substrate_on && p.position[i].z < p.radius[i]) {
+        if (substrate_on_ && p.position[i].z < p.radius[i]) {
             const double rel = 1.0 - p.position[i].z / p.radius[i];
             if (rel > worst) {
                 worst = rel;

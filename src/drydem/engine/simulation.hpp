@@ -50,7 +50,8 @@ struct StepStats {
 /// part of it: velocity Verlet's first half kick uses the forces of the previous evaluation, which
 /// saw the half-step velocities, so they cannot be recomputed from the full-step state.
 struct EngineState {
-    ParticleStore particles; ///< in storage order
+    ParticleStore particles;           ///< in storage order
+    std::vector<BodyState> body_state; ///< what the body laws keep, per particle in storage order
     NeighborList::State neighbors;
     std::int64_t step = 0;
     double time = 0.0;         ///< simulated time [s]
@@ -92,6 +93,8 @@ public:
     [[nodiscard]] double liquid_level() const { return liquid_level_; }
 
     [[nodiscard]] const ParticleStore& particles() const { return p_; }
+    /// What the body laws keep per particle (storage order): `BodyLaws::state<L>(s[i])`.
+    [[nodiscard]] const std::vector<BodyState>& body_states() const { return body_state_; }
     /// Mutable access for set-up and tests; call invalidate_neighbors() after moving particles.
     [[nodiscard]] ParticleStore& particles_mut() { return p_; }
     void invalidate_neighbors() { force_rebuild_ = true; }
@@ -154,6 +157,7 @@ private:
     void allocate_integrator();
 
     ParticleStore p_;
+    std::vector<BodyState> body_state_; ///< per particle, permuted with it on a re-sort
     Box box_;
     ForceField ff_;
     EngineSettings settings_;
@@ -185,6 +189,7 @@ private:
         std::vector<std::uint32_t> touched; ///< particles written this step (capacity n)
     };
     std::vector<ThreadBuffer> buffer_;
+    bool substrate_on_ = false; ///< ForceField::substrate_on, for the wall-contact statistics
 };
 
 /// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below 2.

@@ -114,34 +114,22 @@ GuardOperators assemble_operators(const GuardInputs& in) {
         Operator& stiffness_t = op.stiffness[t];
         std::vector<SelfBlock>* blocks_t = semi ? &share[t] : nullptr;
         for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) {
-            const double r = p.radius[i], z = p.position[i].z;
+            const double r = p.radius[i];
             const int si = p.species[i];
-            // Body laws. Dissipative: drag, substrate lubrication and contact damping.
-            BodyResistance fluid = stokes_drag_resistance(r, in.ff.drag);
-            BodyResistance fluid_now = fluid;
-            BodyResistance spring;
-            if (in.ff.substrate_on) {
-                fluid += substrate_lubrication_resistance(z - skin, r, in.ff.substrate_lubrication);
-                fluid_now += substrate_lubrication_resistance(z, r, in.ff.substrate_lubrication);
-                const double overlap = r - (z - skin);
-                if (overlap > 0.0) {
-                    const HertzMindlinCoefficients co =
-                        hertz_mindlin_coefficients(r, overlap, p.mass[i], in.ff.substrate[si]);
-                    fluid += wall_pair_resistance(co.gamma_n, co.gamma_t, r - overlap);
-                    spring += wall_pair_resistance(co.s_n, co.s_t, r - overlap);
-                }
-                if (r - z > 0.0) {
-                    const HertzMindlinCoefficients co =
-                        hertz_mindlin_coefficients(r, r - z, p.mass[i], in.ff.substrate[si]);
-                    fluid_now += wall_pair_resistance(co.gamma_n, co.gamma_t, z);
-                }
+            // Body laws: their resistance and stiffness where the particle can be before the
+            // next rebuild (within the skin); the semi-implicit kick's self-block at the present
+            // state, as the kick sees it.
+            const BodyParams& bp = in.ff.body_params(si);
+            const BodyGeometry within{p.position[i],   {},  {}, r, p.mass[i], p.density[i],
+                                      in.liquid_level, skin};
+            const BodyResistance spring = BodyLaws::stiffness(within, bp);
+            if (!semi) {
+                damping_t.bodies.push_back({std::uint32_t(i), BodyLaws::resistance(within, bp)});
+            } else {
+                BodyGeometry now = within;
+                now.reach = 0.0;
+                add_self_block((*blocks_t)[i], BodyLaws::resistance(now, bp));
             }
-            if (std::abs(in.liquid_level - z) < r + skin)
-                spring.normal += capillary_stiffness(in.ff.capillary);
-            if (!semi)
-                damping_t.bodies.push_back({std::uint32_t(i), fluid});
-            else
-                add_self_block((*blocks_t)[i], fluid_now);
             if (spring.normal > 0.0) stiffness_t.bodies.push_back({std::uint32_t(i), spring});
 
             for (std::uint32_t s = in.nl.begin(i); s < in.nl.end(i); ++s) {

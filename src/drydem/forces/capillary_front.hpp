@@ -10,8 +10,12 @@
 // drying/scaling.cpp: s_cap = 9e3 in the paper's scheme) and applies no factor.
 #pragma once
 #include "drydem/core/vec3.hpp"
+#include "drydem/forces/body_law.hpp"
+#include "drydem/forces/law_limits.hpp"
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 namespace drydem {
 
@@ -40,5 +44,32 @@ inline Vec3 capillary_front(double z, double r, double liquid_level, const Capil
         s2 * std::cos(p.contact_angle) - u * std::sqrt(s2) * std::sin(p.contact_angle);
     return {0.0, 0.0, -capillary_stiffness(p) * r * shape};
 }
+
+/// The liquid level's pull as a body law (body_law.hpp): conservative, keeps nothing.
+struct CapillaryFrontLaw {
+    using Params = CapillaryParams;
+    struct State {};
+    static constexpr std::string_view name = "capillary_front";
+    static constexpr std::array limits{
+        ParamLimit<Params>{"surface_tension", &Params::surface_tension},
+        ParamLimit<Params>{"contact_angle", &Params::contact_angle, 0.0, std::numbers::pi}};
+
+    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
+                          BodyResistance*) {
+        f.force += capillary_front(g.x.z, g.r, g.liquid_level, p);
+    }
+    static BodyResistance resistance(const BodyGeometry&, const Params&) { return {}; }
+    /// -dF/dz = 2πσ s_cap at the floating equilibrium u = cos θ, while the particle can reach
+    /// the level within g.reach: the rate of the oscillation the level can drive (M-6). The
+    /// slope grows without bound towards |u| = 1, where the particle leaves the force behind
+    /// rather than oscillates in it, so it does not bound the step.
+    static BodyResistance stiffness(const BodyGeometry& g, const Params& p) {
+        if (!(std::abs(g.liquid_level - g.x.z) < g.r + g.reach)) return {};
+        BodyResistance k;
+        k.normal = capillary_stiffness(p);
+        return k;
+    }
+    static bool keeps(const State&) { return false; }
+};
 
 } // namespace drydem

@@ -13,10 +13,9 @@
 // no state.
 // Off by default; docs/model.md "Double-layer repulsion".
 #pragma once
-#include "drydem/forces/lubrication.hpp"
 #include "drydem/forces/pair_geometry.hpp"
-#include "drydem/io/config.hpp"
-#include "drydem/setup/formulation.hpp"
+#include "drydem/forces/law_limits.hpp"
+#include <array>
 #include "drydem/forces/resistance.hpp"
 #include <algorithm>
 #include <cmath>
@@ -66,6 +65,9 @@ struct DoubleLayerLaw {
     using Params = DoubleLayerParams;
     struct State {};
     static constexpr std::string_view name = "double_layer";
+    static constexpr std::array limits{ParamLimit<Params>{"amplitude", &Params::amplitude},
+                                       ParamLimit<Params>{"debye_length", &Params::debye_length},
+                                       ParamLimit<Params>{"cutoff_gap", &Params::cutoff_gap}};
     static double range(const Params& p, double, double) {
         return p.amplitude != 0.0 ? p.cutoff_gap : 0.0;
     }
@@ -86,15 +88,6 @@ struct DoubleLayerLaw {
         return {double_layer_stiffness(at, p), 0.0, 0.0, 0.0, 0.0, 0.0};
     }
     static bool keeps(const State&) { return false; }
-    /// [double_layer] keys; cut-off 0 = the pair's lubrication range r_L = 2R*, as for van der
-    /// Waals (C-13), so that switching it on does not widen the neighbour list.
-    static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
-        if (!c.double_layer) return {};
-        const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
-        return {double_layer_amplitude(c.double_layer_permittivity, c.double_layer_potential, 1.0),
-                c.double_layer_debye_length,
-                c.double_layer_cutoff > 0.0 ? c.double_layer_cutoff : lubrication_radius(ra, rb)};
-    }
 };
 
 } // namespace drydem

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Composition of the force models: the pair laws as a compile-time list (pair_law.hpp), summed in
-// the order of M-9.5 (contact, van der Waals, lubrication, then the double layer, which the
-// paper leaves out); the body laws in particle_forces below. Adding a pair law = one file in
-// forces/ with its struct (pair_law.hpp's contract) and one entry in PairLaws; its config keys
-// go into io/ (ARCHITECTURE.md "Adding a pair law").
+// The registration of the force models: the pair laws (pair_law.hpp) and the body laws
+// (body_law.hpp) as two compile-time lists, summed in the order of M-9.5 (pair: contact, van der
+// Waals, lubrication, then the double layer, which the paper leaves out; body: substrate contact
+// and lubrication, Stokes drag, weight minus buoyancy, capillary force of the liquid level).
+// Adding a law = one header in forces/ with its struct, one entry in its list below, and its
+// parameters from the configuration in drying/law_parameters.cpp (ARCHITECTURE.md "Adding a
+// pair law", "Adding a body law").
 #pragma once
+#include "drydem/forces/body_law.hpp"
 #include "drydem/forces/capillary_front.hpp"
 #include "drydem/forces/double_layer.hpp"
 #include "drydem/forces/gravity_buoyancy.hpp"
@@ -13,7 +16,8 @@
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/pair_law.hpp"
 #include "drydem/forces/stokes_drag.hpp"
-#include "drydem/forces/substrate.hpp"
+#include "drydem/forces/substrate_contact.hpp"
+#include "drydem/forces/substrate_lubrication.hpp"
 #include "drydem/forces/van_der_waals.hpp"
 #include <algorithm>
 #include <vector>
@@ -23,11 +27,17 @@ namespace drydem {
 /// The pair laws, in the order their forces are summed.
 using PairLaws = PairLawList<HertzMindlinLaw, VanDerWaalsLaw, LubricationLaw, DoubleLayerLaw>;
 
-/// Pre-mixed parameters of one species pair (all values as simulated, i.e. scaled), one entry
-/// per law: `PairLaws::params<VanDerWaalsLaw>(pp)`.
-using PairParams = PairLaws::Params;
+/// The body laws, in the order their forces are summed.
+using BodyLaws = BodyLawList<SubstrateContactLaw, SubstrateLubricationLaw, StokesDragLaw,
+                             GravityBuoyancyLaw, CapillaryFrontLaw>;
 
-/// Law L's parameters in a species pair's entry: `law<VanDerWaalsLaw>(pp).hamaker`.
+/// Pre-mixed parameters of one species pair (all values as simulated, i.e. scaled), one entry
+/// per law: `law<VanDerWaalsLaw>(pp)`.
+using PairParams = PairLaws::Params;
+/// The body laws' parameters of one species, one entry per law: `law<StokesDragLaw>(bp)`.
+using BodyParams = BodyLaws::Params;
+
+/// Law L's parameters in a species pair's (or a species') entry.
 template <class L>
 auto& law(PairParams& p) {
     return PairLaws::params<L>(p);
@@ -36,9 +46,19 @@ template <class L>
 const auto& law(const PairParams& p) {
     return PairLaws::params<L>(p);
 }
+template <class L>
+auto& law(BodyParams& p) {
+    return BodyLaws::params<L>(p);
+}
+template <class L>
+const auto& law(const BodyParams& p) {
+    return BodyLaws::params<L>(p);
+}
 
-/// What the laws keep per pair (the neighbour list holds one per slot).
+/// What the laws keep per pair (the neighbour list holds one per slot) and per particle (the
+/// engine holds one per particle, in storage order).
 using PairState = PairLaws::State;
+using BodyState = BodyLaws::State;
 
 /// Interaction range beyond contact of a pair [m] (M-9.4): the largest of the laws' ranges.
 inline double interaction_range(const PairParams& p, double r_i, double r_j) {
@@ -51,46 +71,38 @@ inline PairForce pair_interaction(const PairGeometry& g, const PairParams& p, Pa
     return PairLaws::force(g, p, state, dt, resistance);
 }
 
-/// Every force acting on the particles, per species (pair table) and per particle.
+/// Every force acting on the particles: per species pair and per species.
 struct ForceField {
     int species_count = 0;
-    std::vector<PairParams> pair;              ///< species_count², symmetric
-    std::vector<HertzMindlinParams> substrate; ///< per species, particle-substrate contact
-    bool substrate_on = true;                  ///< rigid plane at z = 0
-    SubstrateLubricationParams substrate_lubrication;
-    StokesDragParams drag;
-    GravityBuoyancyParams gravity;
-    CapillaryParams capillary;
+    std::vector<PairParams> pair; ///< species_count², symmetric
+    std::vector<BodyParams> body; ///< species_count
 
     [[nodiscard]] const PairParams& pair_params(int si, int sj) const {
         return pair[std::size_t(si) * species_count + sj];
     }
+    [[nodiscard]] const BodyParams& body_params(int s) const { return body[std::size_t(s)]; }
+
+    /// Body law L's parameters for every species.
+    template <class L>
+    void set_body_law(const typename L::Params& p) {
+        for (BodyParams& b : body) law<L>(b) = p;
+    }
+    /// Takes the substrate away (contact and lubrication): a free cell in z, for tests.
+    void remove_substrate() {
+        set_body_law<SubstrateContactLaw>({});
+        set_body_law<SubstrateLubricationLaw>({});
+    }
+    /// Whether a particle of any species touches the substrate when it reaches z < r.
+    [[nodiscard]] bool substrate_on() const {
+        return std::any_of(body.begin(), body.end(), [](const BodyParams& b) {
+            return law<SubstrateContactLaw>(b).e_star > 0.0;
+        });
+    }
 };
 
-/// Particle forces in the order of M-9.5: substrate contact and lubrication, Stokes drag,
-/// weight minus buoyancy, capillary force of the liquid level. When `resistance` is given, it
-/// receives the sum of the dissipative laws' resistances (resistance.hpp body form).
-inline BodyForce particle_forces(const ForceField& ff, int species, double r, double density,
-                                 double mass, const Vec3& x, const Vec3& v, const Vec3& omega,
-                                 double liquid_level, Vec3& wall_history, double dt,
-                                 BodyResistance* resistance = nullptr) {
-    BodyForce f{};
-    BodyResistance fluid = stokes_drag_resistance(r, ff.drag);
-    if (ff.substrate_on) {
-        f += substrate_contact(x.z, r, mass, v, omega, ff.substrate[species], wall_history, dt,
-                               resistance);
-        fluid += substrate_lubrication_resistance(x.z, r, ff.substrate_lubrication);
-    }
-    f += resistance_force(fluid, v, omega);
-    f.force += gravity_buoyancy(r, density, ff.gravity);
-    f.force += capillary_front(x.z, r, liquid_level, ff.capillary);
-    if (resistance) *resistance += fluid;
-    return f;
-}
-
-} // namespace drydem
-
-namespace drydem {
+/// Every parameter of every law outside its declared interval (law_limits.hpp), as
+/// "law (species i-j): name = value, allowed I"; empty when the field is valid.
+std::vector<std::string> force_field_violations(const ForceField& ff);
 
 /// A force field with only Hertz-Mindlin contact, the same material for every species and the
 /// substrate (the peers' benchmark, contact tests); other laws off until set.
@@ -103,9 +115,11 @@ inline ForceField uniform_contact_force_field(int species_count, double youngs_m
         mix_hertz_mindlin(youngs_modulus, poisson_ratio, youngs_modulus, poisson_ratio, restitution,
                           friction, rolling_friction);
     PairParams pp{};
-    PairLaws::params<HertzMindlinLaw>(pp) = hm;
+    law<HertzMindlinLaw>(pp) = hm;
     ff.pair.assign(std::size_t(species_count) * species_count, pp);
-    ff.substrate.assign(std::size_t(species_count), hm);
+    BodyParams bp{};
+    law<SubstrateContactLaw>(bp) = hm;
+    ff.body.assign(std::size_t(species_count), bp);
     return ff;
 }
 

@@ -5,6 +5,10 @@
 #pragma once
 #include "drydem/core/sphere.hpp"
 #include "drydem/core/vec3.hpp"
+#include "drydem/forces/body_law.hpp"
+#include "drydem/forces/law_limits.hpp"
+#include <array>
+#include <string_view>
 
 namespace drydem {
 
@@ -16,5 +20,23 @@ struct GravityBuoyancyParams {
 inline Vec3 gravity_buoyancy(double r, double particle_density, const GravityBuoyancyParams& p) {
     return {0.0, 0.0, -sphere_volume(r) * (particle_density - p.fluid_density) * p.gravity};
 }
+
+/// Weight and buoyancy as a body law (body_law.hpp): a constant force, no stiffness (the guard
+/// has nothing to bound), keeps nothing.
+struct GravityBuoyancyLaw {
+    using Params = GravityBuoyancyParams;
+    struct State {};
+    static constexpr std::string_view name = "gravity_buoyancy";
+    static constexpr std::array limits{ParamLimit<Params>{"gravity", &Params::gravity},
+                                       ParamLimit<Params>{"fluid_density", &Params::fluid_density}};
+
+    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
+                          BodyResistance*) {
+        f.force += gravity_buoyancy(g.r, g.density, p);
+    }
+    static BodyResistance resistance(const BodyGeometry&, const Params&) { return {}; }
+    static BodyResistance stiffness(const BodyGeometry&, const Params&) { return {}; }
+    static bool keeps(const State&) { return false; }
+};
 
 } // namespace drydem

@@ -8,8 +8,8 @@
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
-#include "drydem/io/config.hpp"
-#include "drydem/setup/formulation.hpp"
+#include "drydem/forces/law_limits.hpp"
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string_view>
@@ -189,6 +189,14 @@ struct HertzMindlinLaw {
         Vec3 spring; ///< ξ [m]
     };
     static constexpr std::string_view name = "hertz_mindlin";
+    static constexpr std::array limits{
+        ParamLimit<Params>{"e_star", &Params::e_star},
+        ParamLimit<Params>{"g_star", &Params::g_star},
+        ParamLimit<Params>{"beta", &Params::beta},
+        ParamLimit<Params>{"friction", &Params::friction},
+        ParamLimit<Params>{"rolling_friction", &Params::rolling_friction},
+        ParamLimit<Params>{"damping_n", &Params::damping_n},
+        ParamLimit<Params>{"damping_t", &Params::damping_t}};
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
     [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p,
                                                         State& s, double dt, PairForce& f,
@@ -217,15 +225,6 @@ struct HertzMindlinLaw {
     /// pair loop asks this every step).
     static bool keeps(const State& s) {
         return s.spring.x != 0.0 || s.spring.y != 0.0 || s.spring.z != 0.0;
-    }
-    /// [materials] and [contact] keys (M-2.1): the two species' materials, one friction for
-    /// all pairs.
-    static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
-        return mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, youngs_modulus(c, b),
-                                 c.poisson_ratio, c.restitution, c.friction, c.rolling_friction);
-    }
-    static double youngs_modulus(const Config& c, const SizeClass& s) {
-        return s.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
     }
 };
 

@@ -20,8 +20,8 @@
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
-#include "drydem/io/config.hpp"
-#include "drydem/setup/formulation.hpp"
+#include "drydem/forces/law_limits.hpp"
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -92,6 +92,10 @@ struct LubricationLaw {
     using Params = LubricationParams;
     struct State {};
     static constexpr std::string_view name = "lubrication";
+    static constexpr std::array limits{
+        ParamLimit<Params>{"viscosity", &Params::viscosity},
+        ParamLimit<Params>{"kappa_c", &Params::kappa_c, 0.0, 1.0, true, false},
+        ParamLimit<Params>{"log_kappa_c", &Params::log_kappa_c, -INFINITY, 0.0}};
     static double range(const Params& p, double r_i, double r_j) {
         return lubrication_range(p, r_i, r_j);
     }
@@ -109,10 +113,6 @@ struct LubricationLaw {
         return {};
     }
     static bool keeps(const State&) { return false; }
-    /// [lubrication] keys (M-4); `viscosity` as simulated (drying/scaling.cpp: η, or η/b, C-17).
-    static Params from_config(const Config& c, const SizeClass&, const SizeClass&) {
-        return {c.lubrication ? c.viscosity : 0.0, c.kappa_c};
-    }
 };
 
 } // namespace drydem

@@ -22,12 +22,16 @@
 //                           the neighbour skin (the worst case before the next rebuild), `now` the
 //                           present pair: the law picks the one that bounds its rate
 //   keeps(s)                whether s holds something (carried over list rebuilds, checkpointed)
-//   from_config(c, a, b)    its parameters for the species a and b from the configuration
+//   limits                  the valid interval of each parameter (law_limits.hpp)
+// A law knows nothing of the application's configuration: its parameters are mapped from the
+// configuration in one place, drying/law_parameters.cpp, beside the list's registration.
 // Every law of the list sees the same PairGeometry, computed once per pair. A law's state lives
 // in the neighbour list beside the pair; it survives rebuilds, re-sorts and periodic wraps while
 // the pair stays within reach (the largest range of the list plus the skin) and is cleared once
 // the pair has left it, so a law whose state must outlive a gap includes that gap in its range.
 #pragma once
+#include "drydem/forces/law_limits.hpp"
+#include "drydem/forces/law_list.hpp"
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
 #include <algorithm>
@@ -51,28 +55,9 @@ concept PairLaw = requires(const typename L::Params& p, typename L::State& s,
     { L::resistance(g, p) } -> std::same_as<PairResistance>;
     { L::stiffness(g, g, p) } -> std::same_as<PairResistance>;
     { L::keeps(cs) } -> std::same_as<bool>;
+    { limit_violations<L>(p) } -> std::same_as<std::vector<std::string>>;
     requires std::is_trivially_copyable_v<typename L::State>;
     requires std::is_default_constructible_v<typename L::Params>;
-};
-
-/// The per-pair states of a list of laws, one after the other; a law that keeps nothing takes no
-/// space ([[no_unique_address]] on its empty State).
-template <class... Ls>
-struct LawStates {};
-template <class L, class... Rest>
-struct LawStates<L, Rest...> {
-    [[no_unique_address]] typename L::State first{};
-    [[no_unique_address]] LawStates<Rest...> rest{};
-};
-
-/// The parameters of a list of laws for one species pair, in list order (the first law's, the
-/// contact's, at the start of the entry, where the pair loop reads first).
-template <class... Ls>
-struct LawParams {};
-template <class L, class... Rest>
-struct LawParams<L, Rest...> {
-    typename L::Params first{};
-    LawParams<Rest...> rest{};
 };
 
 /// A compile-time list of pair laws, summed in list order.
@@ -80,15 +65,11 @@ template <PairLaw... Ls>
 struct PairLawList {
     using Params = LawParams<Ls...>; ///< one species pair's parameters
     using State = LawStates<Ls...>;  ///< one pair's kept state
+    using Laws = std::tuple<Ls...>;  ///< the laws themselves (for walking the list)
 
     /// The parameters (or state) of law L.
     template <class L>
-    static constexpr std::size_t index_of = [] {
-        constexpr bool same[] = {std::is_same_v<L, Ls>...};
-        std::size_t k = 0;
-        while (!same[k]) ++k;
-        return k;
-    }();
+    static constexpr std::size_t index_of = law_index<L, Ls...>;
     template <class L>
     static auto& params(Params& p) {
         return member_at<index_of<L>>(p);
@@ -100,12 +81,6 @@ struct PairLawList {
     template <class L>
     static auto& state(State& s) {
         return state_at<index_of<L>>(s);
-    }
-
-    /// Every law's parameters from the configuration (each law's `from_config`, beside the law).
-    template <class... Args>
-    static Params from_config(const Args&... args) {
-        return from_config_of(all{}, args...);
     }
 
     /// Interaction range of the pair beyond contact [m]: the largest of the laws' ranges.
@@ -144,39 +119,20 @@ struct PairLawList {
     [[gnu::always_inline]] static inline bool keeps(const State& s) { return keeps_of(all{}, s); }
 
     /// The laws' names and state sizes: a checkpoint written with another list is refused.
-    static std::string_view layout() {
-        static const std::string text = [] {
-            std::string t;
-            ((t += std::string(Ls::name) + ":" + std::to_string(sizeof(typename Ls::State)) + ";"),
-             ...);
-            return t;
-        }();
-        return text;
-    }
+    static std::string_view layout() { return law_layout<Ls...>(); }
 
 private:
     using all = std::index_sequence_for<Ls...>;
     template <std::size_t K>
     using at = std::tuple_element_t<K, std::tuple<Ls...>>;
 
-    /// The K-th member of a LawStates or LawParams.
     template <std::size_t K, class S>
     [[gnu::always_inline]] static inline auto& member_at(S& s) {
-        if constexpr (K == 0)
-            return s.first;
-        else
-            return member_at<K - 1>(s.rest);
+        return law_member<K>(s);
     }
     template <std::size_t K, class S>
     [[gnu::always_inline]] static inline auto& state_at(S& s) {
-        return member_at<K>(s);
-    }
-
-    template <std::size_t... K, class... Args>
-    static Params from_config_of(std::index_sequence<K...>, const Args&... args) {
-        Params p;
-        ((member_at<K>(p) = at<K>::from_config(args...)), ...);
-        return p;
+        return law_member<K>(s);
     }
 
     // The folds over the list, one per operation (index sequences, no lambdas: every layer

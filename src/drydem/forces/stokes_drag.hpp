@@ -5,9 +5,11 @@
 // The viscosity is the reduced η/b (b = 10, M-7: 0.1801 Pa s); lubrication keeps the full η
 // (C-17). Acts on every particle at all times, also above the liquid level (C-19).
 #pragma once
-#include "drydem/forces/pair_geometry.hpp"
-#include "drydem/forces/resistance.hpp"
+#include "drydem/forces/body_law.hpp"
+#include "drydem/forces/law_limits.hpp"
+#include <array>
 #include <numbers>
+#include <string_view>
 
 namespace drydem {
 
@@ -38,5 +40,26 @@ inline BodyForce stokes_drag(double r, const Vec3& v, const Vec3& omega,
                              const StokesDragParams& p) {
     return resistance_force(stokes_drag_resistance(r, p), v, omega);
 }
+
+/// The drag as a body law (body_law.hpp): purely dissipative, keeps nothing, independent of
+/// where the particle is.
+struct StokesDragLaw {
+    using Params = StokesDragParams;
+    struct State {};
+    static constexpr std::string_view name = "stokes_drag";
+    static constexpr std::array limits{ParamLimit<Params>{"viscosity", &Params::viscosity}};
+
+    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
+                          BodyResistance* r) {
+        const BodyResistance drag = stokes_drag_resistance(g.r, p);
+        if (r) *r += drag;
+        f += resistance_force(drag, g.v, g.omega);
+    }
+    static BodyResistance resistance(const BodyGeometry& g, const Params& p) {
+        return stokes_drag_resistance(g.r, p);
+    }
+    static BodyResistance stiffness(const BodyGeometry&, const Params&) { return {}; }
+    static bool keeps(const State&) { return false; }
+};
 
 } // namespace drydem

@@ -8,11 +8,10 @@
 // h_cut defaults to the lubrication range r_L of the pair (C-13, chosen by the caller); no van der
 // Waals with the substrate (C-14). Conservative and central: no torque.
 #pragma once
-#include "drydem/forces/lubrication.hpp"
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
-#include "drydem/io/config.hpp"
-#include "drydem/setup/formulation.hpp"
+#include "drydem/forces/law_limits.hpp"
+#include <array>
 #include <algorithm>
 #include <string_view>
 
@@ -48,6 +47,9 @@ struct VanDerWaalsLaw {
     using Params = VanDerWaalsParams;
     struct State {};
     static constexpr std::string_view name = "van_der_waals";
+    static constexpr std::array limits{ParamLimit<Params>{"hamaker", &Params::hamaker},
+                                       ParamLimit<Params>{"min_gap", &Params::min_gap},
+                                       ParamLimit<Params>{"cutoff_gap", &Params::cutoff_gap}};
     static double range(const Params& p, double r_i, double r_j) {
         return van_der_waals_range(p, r_i, r_j);
     }
@@ -68,20 +70,6 @@ struct VanDerWaalsLaw {
         return {van_der_waals_stiffness(now, p), 0.0, 0.0, 0.0, 0.0, 0.0};
     }
     static bool keeps(const State&) { return false; }
-    /// [van_der_waals] keys (M-3): Hamaker constant (as simulated: drying/scaling.cpp) and minimum
-    /// gap by material pair; cut-off 0 = the pair's r_L = 2R* (C-13, C-15).
-    static Params from_config(const Config& c, const SizeClass& a, const SizeClass& b) {
-        Params p;
-        if (a.is_cb && b.is_cb)
-            p = {c.hamaker_cb_cb, c.min_gap_cb_cb, 0.0};
-        else if (a.is_cb || b.is_cb)
-            p = {c.hamaker_ncm_cb, c.min_gap_ncm_cb, 0.0};
-        else
-            p = {c.hamaker_ncm_ncm, c.min_gap_ncm_ncm, 0.0};
-        const double ra = 0.5 * a.diameter, rb = 0.5 * b.diameter;
-        p.cutoff_gap = c.vdw_cutoff > 0.0 ? c.vdw_cutoff : lubrication_radius(ra, rb);
-        return p;
-    }
 };
 
 } // namespace drydem

@@ -13,8 +13,9 @@ namespace {
 constexpr char kMagic[8] = {'D', 'R', 'Y', 'D', 'E', 'M', 'C', 'K'};
 // Format 3: the drying run's progress is a versioned list of named fields (drying/run_state.hpp),
 // no longer the raw bytes of a struct. Format 4: the neighbour list holds the pair laws' state
-// (PairState), preceded by the list's layout (law names and state sizes).
-constexpr std::uint32_t kFormatVersion = 4;
+// (PairState), preceded by the list's layout (law names and state sizes). Format 5: the body
+// laws' states (BodyState) in place of the substrate's spring, and the layout of both lists.
+constexpr std::uint32_t kFormatVersion = 5;
 
 std::uint64_t fnv1a(const unsigned char* data, std::size_t n) {
     std::uint64_t h = 14695981039346656037ull;
@@ -23,6 +24,10 @@ std::uint64_t fnv1a(const unsigned char* data, std::size_t n) {
 }
 
 } // namespace
+
+std::string law_layout_text() {
+    return "pair " + std::string(PairLaws::layout()) + " body " + std::string(BodyLaws::layout());
+}
 
 void BinaryReader::truncated() const {
     throw InputError(fmt::format("{}: the checkpoint data end early (damaged file?)", source_));
@@ -36,7 +41,7 @@ void each_field(State& s, F&& field) {
     auto& p = s.particles;
     field(p.id), field(p.species), field(p.radius), field(p.density), field(p.mass);
     field(p.inv_mass), field(p.inv_inertia), field(p.position), field(p.velocity), field(p.omega);
-    field(p.force), field(p.torque), field(p.wall_history);
+    field(p.force), field(p.torque), field(s.body_state);
     auto& nl = s.neighbors;
     field(nl.builds), field(nl.offset), field(nl.partner), field(nl.reach2), field(nl.pair_state);
     field(nl.x_build);
@@ -52,7 +57,7 @@ struct is_vector<std::vector<T>> : std::true_type {};
 } // namespace
 
 void write_engine_state(BinaryWriter& w, const EngineState& s) {
-    const std::string_view layout = PairLaws::layout();
+    const std::string layout = law_layout_text();
     w.vec(std::vector<char>(layout.begin(), layout.end()));
     each_field(s, [&](const auto& v) {
         if constexpr (is_vector<std::remove_cvref_t<decltype(v)>>::value)
@@ -64,11 +69,10 @@ void write_engine_state(BinaryWriter& w, const EngineState& s) {
 
 EngineState read_engine_state(BinaryReader& r) {
     const std::vector<char> layout = r.vec<char>();
-    if (std::string_view(layout.data(), layout.size()) != PairLaws::layout())
-        throw InputError(
-            fmt::format("checkpoint: written with the pair laws '{}', this build has '{}'; "
-                        "it cannot be continued by this build",
-                        std::string(layout.begin(), layout.end()), PairLaws::layout()));
+    if (std::string_view(layout.data(), layout.size()) != law_layout_text())
+        throw InputError(fmt::format("checkpoint: written with the laws '{}', this build has '{}'; "
+                                     "it cannot be continued by this build",
+                                     std::string(layout.begin(), layout.end()), law_layout_text()));
     EngineState s;
     each_field(s, [&](auto& v) {
         using T = std::remove_cvref_t<decltype(v)>;
@@ -83,7 +87,7 @@ EngineState read_engine_state(BinaryReader& r) {
     for (std::size_t m :
          {p.species.size(), p.radius.size(), p.density.size(), p.mass.size(), p.inv_mass.size(),
           p.inv_inertia.size(), p.position.size(), p.velocity.size(), p.omega.size(),
-          p.force.size(), p.torque.size(), p.wall_history.size()})
+          p.force.size(), p.torque.size(), s.body_state.size()})
         if (m != n) throw InputError("checkpoint: particle arrays of different lengths");
     const auto& nl = s.neighbors;
     const bool list_ok =

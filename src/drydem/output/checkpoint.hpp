@@ -90,6 +90,9 @@ private:
     std::size_t pos_ = 0;
 };
 
+/// The pair and body laws this build composes ("pair name:state size;... body ..."), written
+/// ahead of the engine state: a checkpoint of another composition is refused.
+[[nodiscard]] std::string law_layout_text();
 void write_engine_state(BinaryWriter& w, const EngineState& s);
 [[nodiscard]] EngineState read_engine_state(BinaryReader& r);
 

@@ -1,11 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Particle-substrate interactions with the rigid current collector, the plane z = 0.
-// (a) Contact: model.md M-2.6, the Hertz-Mindlin law of M-2 (hertz_mindlin.hpp) with δ = r - z,
-//     n = -ẑ (from the particle toward the wall), R* = r, m* = m, lever c_i = r - δ (the contact
-//     point lies on the plane), c_j = 0 and ω_j = 0. Aluminium substrate (C-8, C-6); no van der
-//     Waals with the wall (C-14).
-// (b) Lubrication: model.md M-4.4, sphere-plane near-contact asymptotics (Cox & Brenner 1967,
-//     Goldman, Cox & Brenner 1967) with the Vinogradova factor (Eq. 7) on the normal term.
+// Lubrication between a particle and the substrate: model.md M-4.4, sphere-plane near-contact
+// asymptotics (Cox & Brenner 1967, Goldman, Cox & Brenner 1967) with the Vinogradova factor
+// (Eq. 7) on the normal term.
 //   h = z - r, κ = h/r, κ_e = max(κ, κ_c), active for κ ≤ 1, L = ln(1/κ_e)
 //   X_w = 1/κ_e - (1/5) ln κ_e - (1/21) κ_e ln κ_e
 //   A_w = (8/15) L + (64/375) κ_e L,  B_w = (2/15) L + (86/375) κ_e L,
@@ -14,33 +10,19 @@
 //   T =  6πη r² B_w (ẑ × v_t) - 8πη r³ D_w ω_t - 8πη r³ (1/2) κ_e L ω_z ẑ
 //   The two coupling terms share 6πη r² B_w, so the resistance matrix is symmetric (dissipative).
 #pragma once
-#include "drydem/forces/hertz_mindlin.hpp"
+#include "drydem/forces/body_law.hpp"
+#include "drydem/forces/law_limits.hpp"
 #include "drydem/forces/lubrication.hpp"
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 namespace drydem {
 
-/// Hertz-Mindlin contact with the substrate; `wall_history` is the tangential spring ξ of the
-/// (id, substrate) contact, erased when the contact opens (M-2.3, M-2.5). `damping` receives the
-/// viscous part as a resistance (resistance.hpp body form).
-inline BodyForce substrate_contact(double z, double r, double m, const Vec3& v, const Vec3& omega,
-                                   const HertzMindlinParams& p, Vec3& wall_history, double dt,
-                                   BodyResistance* damping = nullptr) {
-    const double overlap = r - z;
-    if (overlap <= 0.0) {
-        wall_history = {};
-        return {};
-    }
-    const ContactKinematics k{Vec3{0.0, 0.0, -1.0}, overlap, r, m, r - overlap, 0.0, v, omega, {}};
-    const ContactForce c = hertz_mindlin_contact(k, p, wall_history, dt);
-    if (damping) *damping += wall_pair_resistance(c.damping_n, c.damping_t, k.lever_i);
-    return {c.force_i, c.torque_i};
-}
-
 struct SubstrateLubricationParams {
-    double viscosity = 0.0; ///< η [Pa s] (C-17: unreduced); 0 = off
+    double viscosity = 0.0; ///< η [Pa s], as simulated (C-17); 0 = off
     double kappa_c = 0.1;   ///< κ_c = h_c / r
 };
 
@@ -79,5 +61,28 @@ inline BodyForce substrate_lubrication(double z, double r, const Vec3& v, const 
 inline double substrate_lubrication_range(const SubstrateLubricationParams& p, double r) {
     return p.viscosity > 0.0 ? r : 0.0;
 }
+
+/// The law as a body law (body_law.hpp): purely dissipative, keeps nothing.
+struct SubstrateLubricationLaw {
+    using Params = SubstrateLubricationParams;
+    struct State {};
+    static constexpr std::string_view name = "substrate_lubrication";
+    static constexpr std::array limits{
+        ParamLimit<Params>{"viscosity", &Params::viscosity},
+        ParamLimit<Params>{"kappa_c", &Params::kappa_c, 0.0, 1.0, true, false}};
+
+    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
+                          BodyResistance* r) {
+        const BodyResistance lub = substrate_lubrication_resistance(g.x.z, g.r, p);
+        if (r) *r += lub;
+        f += resistance_force(lub, g.v, g.omega);
+    }
+    /// At the narrowest gap within g.reach (the resistance grows as the gap closes).
+    static BodyResistance resistance(const BodyGeometry& g, const Params& p) {
+        return substrate_lubrication_resistance(g.x.z - g.reach, g.r, p);
+    }
+    static BodyResistance stiffness(const BodyGeometry&, const Params&) { return {}; }
+    static bool keeps(const State&) { return false; }
+};
 
 } // namespace drydem

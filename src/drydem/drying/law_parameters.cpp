@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/drying/law_parameters.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <string>
+#include <tuple>
+#include <type_traits>
+
+namespace drydem {
+namespace {
+
+/// What a mapping reads: the configuration with every law parameter already as simulated
+/// (simulated_config) and the scaled values that have no key of their own.
+struct LawInputs {
+    const Config& c;
+    const ScaledParameters& s;
+};
+
+template <class L>
+using For = std::type_identity<L>;
+
+double youngs_modulus(const Config& c, const SizeClass& s) {
+    return s.is_cb ? c.cb_youngs_modulus : c.ncm_youngs_modulus;
+}
+
+// ---- pair laws: parameters of the species pair (a, b) ----
+
+/// [materials] and [contact] keys (M-2.1): the two species' materials, one friction for all pairs.
+HertzMindlinParams params(For<HertzMindlinLaw>, const LawInputs& in, const SizeClass& a,
+                          const SizeClass& b) {
+    const Config& c = in.c;
+    return mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, youngs_modulus(c, b),
+                             c.poisson_ratio, c.restitution, c.friction, c.rolling_friction);
+}
+
+/// [van_der_waals] keys (M-3): Hamaker constant and minimum gap by material pair; cut-off 0 = the
+/// pair's r_L = 2R* (C-13, C-15).
+VanDerWaalsParams params(For<VanDerWaalsLaw>, const LawInputs& in, const SizeClass& a,
+                         const SizeClass& b) {
+    const Config& c = in.c;
+    VanDerWaalsParams p;
+    if (a.is_cb && b.is_cb)
+        p = {c.hamaker_cb_cb, c.min_gap_cb_cb, 0.0};
+    else if (a.is_cb || b.is_cb)
+        p = {c.hamaker_ncm_cb, c.min_gap_ncm_cb, 0.0};
+    else
+        p = {c.hamaker_ncm_ncm, c.min_gap_ncm_ncm, 0.0};
+    p.cutoff_gap =
+        c.vdw_cutoff > 0.0 ? c.vdw_cutoff : lubrication_radius(0.5 * a.diameter, 0.5 * b.diameter);
+    return p;
+}
+
+/// [lubrication] keys (M-4); the viscosity as simulated (η, or η/b, C-17).
+LubricationParams params(For<LubricationLaw>, const LawInputs& in, const SizeClass&,
+                         const SizeClass&) {
+    return {in.c.lubrication ? in.s.lubrication_viscosity : 0.0, in.c.kappa_c};
+}
+
+/// [double_layer] keys; cut-off 0 = the pair's lubrication range r_L = 2R*, as for van der Waals
+/// (C-13), so that switching it on does not widen the neighbour list.
+DoubleLayerParams params(For<DoubleLayerLaw>, const LawInputs& in, const SizeClass& a,
+                         const SizeClass& b) {
+    const Config& c = in.c;
+    if (!c.double_layer) return {};
+    return {double_layer_amplitude(c.double_layer_permittivity, c.double_layer_potential, 1.0),
+            c.double_layer_debye_length,
+            c.double_layer_cutoff > 0.0 ? c.double_layer_cutoff
+                                        : lubrication_radius(0.5 * a.diameter, 0.5 * b.diameter)};
+}
+
+// ---- body laws: parameters of the species a ----
+
+/// [materials] substrate keys and contact.substrate_friction (M-2.6).
+HertzMindlinParams params(For<SubstrateContactLaw>, const LawInputs& in, const SizeClass& a) {
+    const Config& c = in.c;
+    return mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, c.substrate_youngs_modulus,
+                             c.substrate_poisson_ratio, c.restitution, c.substrate_friction,
+                             c.rolling_friction);
+}
+
+/// lubrication.substrate and lubrication.kappa_c (M-4.4), the lubrication viscosity.
+SubstrateLubricationParams params(For<SubstrateLubricationLaw>, const LawInputs& in,
+                                  const SizeClass&) {
+    return {in.c.substrate_lubrication ? in.s.lubrication_viscosity : 0.0, in.c.kappa_c};
+}
+
+/// The Stokes viscosity η/b (M-5), with rotation (C-18).
+StokesDragParams params(For<StokesDragLaw>, const LawInputs& in, const SizeClass&) {
+    return {in.s.drag_viscosity_scaled, true};
+}
+
+/// Scaled gravity and materials.solvent_density (M-5).
+GravityBuoyancyParams params(For<GravityBuoyancyLaw>, const LawInputs& in, const SizeClass&) {
+    return {in.s.gravity_scaled, in.c.solvent_density};
+}
+
+/// σ s_cap as simulated and materials.contact_angle (M-6).
+CapillaryParams params(For<CapillaryFrontLaw>, const LawInputs& in, const SizeClass&) {
+    return {in.s.surface_tension_scaled, in.c.contact_angle};
+}
+
+/// Every law of a list mapped by its function above (a law without one does not compile).
+template <class... Ls>
+PairParams pair_params(std::tuple<Ls...>*, const LawInputs& in, const SizeClass& a,
+                       const SizeClass& b) {
+    PairParams p;
+    ((law<Ls>(p) = params(For<Ls>{}, in, a, b)), ...);
+    return p;
+}
+template <class... Ls>
+BodyParams body_params(std::tuple<Ls...>*, const LawInputs& in, const SizeClass& a) {
+    BodyParams p;
+    ((law<Ls>(p) = params(For<Ls>{}, in, a)), ...);
+    return p;
+}
+
+} // namespace
+
+ForceField make_drying_force_field(const Config& config, const FilmRecipe& recipe,
+                                   const ScaledParameters& s) {
+    const Config c = simulated_config(config, s); // the laws see simulated values only
+    const LawInputs in{c, s};
+    ForceField ff;
+    const int n = int(recipe.species.size());
+    ff.species_count = n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            ff.pair.push_back(pair_params(static_cast<PairLaws::Laws*>(nullptr), in,
+                                          recipe.species[std::size_t(i)],
+                                          recipe.species[std::size_t(j)]));
+    for (int i = 0; i < n; ++i)
+        ff.body.push_back(
+            body_params(static_cast<BodyLaws::Laws*>(nullptr), in, recipe.species[std::size_t(i)]));
+    if (const auto bad = force_field_violations(ff); !bad.empty())
+        throw InputError(fmt::format(
+            "the laws' parameters as simulated are out of range ({}): {}. Check the keys of the "
+            "law's section and the [scaling] factors that multiply them",
+            bad.size(), fmt::join(bad, "; ")));
+    return ff;
+}
+
+PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe) {
+    PairReach widest;
+    for (int i = 0; i < ff.species_count; ++i)
+        for (int j = 0; j < ff.species_count; ++j) {
+            const double d_i = recipe.species[std::size_t(i)].diameter,
+                         d_j = recipe.species[std::size_t(j)].diameter;
+            const double reach =
+                0.5 * (d_i + d_j) + interaction_range(ff.pair_params(i, j), 0.5 * d_i, 0.5 * d_j);
+            if (reach > widest.reach) widest = {reach, d_i, d_j};
+        }
+    return widest;
+}
+
+} // namespace drydem

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// The laws' parameters from the configuration, in one place beside the lists that register the
+// laws (forces/force_field.hpp). The law headers know nothing of Config or the recipe: each law
+// gets one mapping function here, from the simulated values (drying/scaling.cpp: the factors are
+// applied before, never in a law). The whole field is then checked against the intervals every
+// law declares (forces/law_limits.hpp).
+#pragma once
+#include "drydem/drying/scaling.hpp"
+#include "drydem/forces/force_field.hpp"
+#include "drydem/io/config.hpp"
+#include "drydem/setup/formulation.hpp"
+
+namespace drydem {
+
+/// Species pair table and body-law parameters of the drying simulation, from the recipe's species
+/// (NCM classes, then CB) and the scaled parameters. InputError, naming the law, the parameter,
+/// its value and the configuration keys behind it, when a value leaves its law's interval.
+ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
+                                   const ScaledParameters& s);
+
+/// The widest pair of the film's species: the largest centre distance r_i + r_j + the pair laws'
+/// range (interaction_range, as the neighbour list reaches) over every species pair [m], and the
+/// two diameters of that pair.
+struct PairReach {
+    double reach = 0.0, diameter_i = 0.0, diameter_j = 0.0;
+};
+PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe);
+
+} // namespace drydem
