@@ -106,6 +106,21 @@ def wait_for_folder(run_dir, timeout=300.0):
                 time.sleep(0.5)
 
 
+def folder_free(run_dir):
+    """Whether no process holds the run folder's lock (its run has exited)."""
+    import fcntl
+    lock = os.path.join(run_dir, ".drydem.lock")
+    if not os.path.exists(lock):
+        return True
+    with open(lock, "a") as f:
+        try:
+            fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            fcntl.flock(f, fcntl.LOCK_UN)
+            return True
+        except BlockingIOError:
+            return False
+
+
 def parent_death_signal():
     """A run gets SIGTERM when the driver dies (also on SIGKILL): it checkpoints and stops, and a
     resumed calibration continues it instead of finding it still running."""
@@ -186,39 +201,50 @@ class Calibration:
 
     # ---- running -----------------------------------------------------------------------------
     def run_local(self, tasks):
-        jobs = max(1, self.args.jobs)
+        """The runs through `drydem pool`, the job pool `drydem study` uses (app/job_pool.cpp):
+        --jobs at a time, each folder brought to its end by its state (a stopped run resumed, a
+        partial one restarted). Ctrl-C/SIGTERM reach the pool, which stops its runs at a
+        checkpoint."""
         queue = [t for t in tasks if slurm_array.run_state(t["dir"]) not in ("completed", "failed")
                  and self.ledger_state(t) not in ("completed", "failed")]
+        if not queue:
+            return
+        for t in queue:
+            wait_for_folder(t["dir"])
         os.makedirs(os.path.join(self.dir, "logs"), exist_ok=True)
-        while (queue or CHILDREN) and not STOP["signal"]:
-            while queue and len(CHILDREN) < jobs and not STOP["signal"]:
-                t = queue.pop(0)
-                wait_for_folder(t["dir"])
-                cmd = slurm_array.run_args(self.spec["drydem"], t, self.args.threads)
-                name = os.path.basename(t["dir"])
-                console = open(os.path.join(self.dir, "logs", name + ".txt"), "a")
-                self.say(f"start {name}: {' '.join(cmd[1:4])} ...")
-                p = subprocess.Popen(cmd, stdout=console, stderr=subprocess.STDOUT, preexec_fn=parent_death_signal)
-                console.close()
-                CHILDREN[p.pid] = p
-                p.task = t
+        tasks_file = os.path.join(self.dir, "pool_tasks.json")
+        with open(tasks_file + ".tmp", "w") as f:
+            json.dump({"tasks": [{"dir": t["dir"], "args": t["args"]} for t in queue]}, f, indent=1)
+        os.replace(tasks_file + ".tmp", tasks_file)
+        cmd = [self.spec["drydem"], "pool", tasks_file, "--jobs", str(max(1, self.args.jobs)),
+               "--threads", str(self.args.threads), "--no-plots"]
+        self.say(f"pool: {len(queue)} run(s), {max(1, self.args.jobs)} at a time: "
+                 + ", ".join(os.path.basename(t["dir"]) for t in queue))
+        with open(os.path.join(self.dir, "logs", "pool.txt"), "a") as console:
+            p = subprocess.Popen(cmd, stdout=console, stderr=subprocess.STDOUT,
+                                 preexec_fn=parent_death_signal)
+        CHILDREN[p.pid] = p
+        # Each run is recorded in the ledger as soon as it has ended (its folder completed or failed
+        # and its lock let go), not when the whole batch has: a calibration killed mid-batch keeps
+        # every finished evaluation.
+        pending = list(queue)
+        while True:
             try:
-                pid, status = os.wait()
-            except ChildProcessError:
-                break
+                p.wait(timeout=0.5)
+                ended = True
+            except subprocess.TimeoutExpired:
+                ended = False
             except InterruptedError:
                 continue
-            p = CHILDREN.pop(pid, None)
-            if p is None:
-                continue
-            code = os.waitstatus_to_exitcode(status)
-            # a run that ended on its own without a summary or a checkpoint (a set-up error) is over
-            self.collect(p.task, final=not STOP["signal"], code=code)
-        # a stop: wait for the runs to write their checkpoints
-        for p in list(CHILDREN.values()):
-            p.wait()
-            CHILDREN.pop(p.pid, None)
-            self.collect(p.task)
+            for t in list(pending):
+                if slurm_array.run_state(t["dir"]) in ("completed", "failed") and folder_free(t["dir"]):
+                    pending.remove(t)
+                    self.collect(t, final=True)
+            if ended:
+                break
+        CHILDREN.pop(p.pid, None)
+        for t in pending:
+            self.collect(t, final=not STOP["signal"])
 
     def run_slurm(self, tasks):
         sched = self.spec["scheduler"]
@@ -233,8 +259,7 @@ class Calibration:
         return r["state"] if r else None
 
     def console_tail(self, t):
-        for f in (os.path.join(self.dir, "logs", os.path.basename(t["dir"]) + ".txt"),
-                  os.path.join(t["dir"], "log.txt")):
+        for f in (os.path.join(t["dir"], "console.txt"), os.path.join(t["dir"], "log.txt")):
             try:
                 with open(f) as fh:
                     lines = [ln.strip() for ln in fh if ln.strip()]
@@ -268,7 +293,7 @@ class Calibration:
                         v = None
                 values[tg["name"]] = v
         except (OSError, ValueError):
-            error = f"no summary.json (exit code {code}): {self.console_tail(t)}"
+            error = "no summary.json" + (f" (exit code {code})" if code is not None else "") + f": {self.console_tail(t)}"
         if final and state in ("partial", "new"):
             state = "failed"
         if state == "completed" and any(values.get(tg["name"]) is None for tg in self.targets):

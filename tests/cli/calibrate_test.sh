@@ -42,7 +42,10 @@ rc=$?
 grep -q "$n_before done before" "$cal/log.txt" || fail "the resumed driver did not start from the ledger"
 # the third run, cut off by the kill, is continued from its checkpoint (or, killed before its
 # first checkpoint, started again in its folder)
-grep -Eq 'start eval_003_s12345: run (--resume|/)' "$cal/log.txt" || fail "the interrupted run was not continued"
+# (the runs go through `drydem pool`, whose lines are in logs/pool.txt)
+grep -Eq 'resumed eval_003_s12345' "$cal/logs/pool.txt" ||
+  [[ $(grep -c 'started eval_003_s12345' "$cal/logs/pool.txt") -ge 2 ]] ||
+  fail "the interrupted run was not continued: $(cat "$cal/logs/pool.txt")"
 grep -E 'start eval_003_s12345' "$cal/log.txt" | tail -1
 [[ $(ls -d "$cal"/eval_*_s12345 | wc -l) -eq 4 ]] || fail "not 4 evaluation folders"
 /usr/bin/python3 - "$cal" <<'PY' || fail "results"

@@ -6,6 +6,7 @@
 // reaches the driver, and the folder's lock stays held until the driver ends.
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/io/install_paths.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/study/calibration.hpp"
 #include <fmt/format.h>
@@ -139,7 +140,7 @@ int run_calibrate(const Config& c, const CalibrateOptions& o) {
     write_file_atomically(config_file, [&](std::ostream& os) { os << config_text; });
     write_file_atomically(spec_file, [&](std::ostream& os) { os << spec.dump(2) << "\n"; });
 
-    const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "calibrate.py";
+    const fs::path script = script_path("calibrate.py");
     if (!fs::exists("/usr/bin/python3") || !fs::exists(script))
         throw RunError(
             fmt::format("drydem calibrate needs /usr/bin/python3 and {} (scripts/install_deps.sh)",

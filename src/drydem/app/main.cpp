@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// `drydem` command line (README "Command line"): run, check, dryer, analyze, study, calibrate, config, bench. Exit codes: 0 success,
+// `drydem` command line (README "Command line"): run, check, dryer, analyze, study, pool, calibrate, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
 #include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/app/commands.hpp"
+#include "drydem/study/job_pool.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/dryer_model/dryer_config.hpp"
@@ -73,6 +74,9 @@ struct CommandLine {
     std::string an_voxel, an_dz, an_gap, an_config, an_pore_top;
     bool an_no_voxels = false;
     app::BenchOptions bench_opt;
+    PoolOptions pool_opt;
+    std::string pool_tasks;
+    CLI::App* pool = nullptr;
     CLI::App *run = nullptr, *dryer = nullptr, *check = nullptr, *config = nullptr,
              *study = nullptr, *calibrate = nullptr, *analyze = nullptr, *bench = nullptr;
     CLI::Option *seed_opt = nullptr, *threads_opt = nullptr, *stop_after_opt = nullptr;
@@ -177,6 +181,22 @@ void declare_study_calibrate(CommandLine& a) {
                      "where the runs run: local (child processes) or slurm (a job array; = --set "
                      "scheduler.type=...)")
         ->check(CLI::IsMember({"local", "slurm"}));
+
+    a.pool = a.cli.add_subcommand(
+        "pool", "bring the drydem runs of a task file to their end, --jobs at a time (the job "
+                "pool of `study`; scripts/calibrate.py hands its runs here)");
+    a.pool
+        ->add_option("tasks", a.pool_tasks,
+                     "JSON: {\"tasks\": [{\"dir\": DIR, \"args\": "
+                     "[\"run\", CONFIG, ...]}]}")
+        ->required()
+        ->check(CLI::ExistingFile);
+    a.pool->add_option("--jobs", a.pool_opt.jobs, "runs at a time (default 1)")
+        ->check(CLI::PositiveNumber);
+    a.pool->add_option("--threads", a.pool_opt.threads, "threads per run (default 1)")
+        ->check(CLI::PositiveNumber);
+    a.pool->add_flag("--quiet", a.quiet, "print nothing");
+    a.pool->add_flag("--no-plots", a.no_plots, "skip the runs' matplotlib plots");
 
     a.calibrate = a.cli.add_subcommand(
         "calibrate", "fit config parameters to measured targets ([calibration]; "
@@ -459,6 +479,10 @@ int main(int argc, char** argv) {
         if (*a.check) return check_command(a);
         if (*a.calibrate) return calibrate_command(a);
         if (*a.study) return study_command(a);
+        if (*a.pool) {
+            a.pool_opt.plots = !a.no_plots;
+            return run_pool_command(app::self_executable(), a.pool_tasks, a.pool_opt, a.quiet);
+        }
         if (*a.dryer) return dryer_command(a);
         if (!*a.run) {
             std::cout << a.cli.help();

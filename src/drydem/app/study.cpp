@@ -3,8 +3,10 @@
 // set-up of one case is recorded and the others go on), up to `jobs` at a time; then study.csv,
 // study.json and the Fig. 6 plot.
 #include "drydem/app/commands.hpp"
+#include "drydem/study/job_pool.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
+#include "drydem/io/install_paths.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/output/python_script.hpp"
 #include "drydem/study/study.hpp"
@@ -36,22 +38,6 @@ std::string self_executable() {
 }
 
 namespace {
-
-pid_t spawn(const std::vector<std::string>& args, const std::filesystem::path& console_log) {
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, console_log.c_str(),
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    pid_t pid = 0;
-    const int rc = posix_spawn(&pid, args[0].c_str(), &fa, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&fa);
-    if (rc != 0) throw RunError(fmt::format("cannot start {}: {}", args[0], std::strerror(rc)));
-    return pid;
-}
 
 /// What the parts of a study share: its options, its plan and its results so far.
 struct Study {
@@ -101,15 +87,6 @@ struct Study {
     }
 };
 
-/// A case's run folder from an earlier, stopped study (--resume): completed, or stopped with a
-/// checkpoint to continue from.
-enum class Earlier { none, completed, stopped };
-Earlier earlier_run(const StudyCase& c, const std::filesystem::path& dir) {
-    if (read_study_row(c, dir, 0).status == "completed") return Earlier::completed;
-    if (std::filesystem::exists(dir / "checkpoint" / "state.bin")) return Earlier::stopped;
-    return Earlier::none;
-}
-
 /// One Slurm job array, one run per task (scripts/slurm_array.py: threads from
 /// SLURM_CPUS_PER_TASK, a task stopped at its time limit resubmitted and resumed).
 void run_on_slurm(Study& st, const std::string& exe) {
@@ -133,11 +110,11 @@ void run_on_slurm(Study& st, const std::string& exe) {
     }
     const fs::path tasks_file = st.o.output_dir / "slurm_tasks.json";
     write_file_atomically(tasks_file, [&](std::ostream& os) { os << spec.dump(1) << "\n"; });
-    const fs::path script = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / "slurm_array.py";
+    const fs::path script = script_path("slurm_array.py");
     st.say(fmt::format("slurm: {} runs as one job array, {} cpu(s) per task", st.cases.size(),
                        base.slurm_cpus_per_task));
-    const pid_t pid = spawn({"/usr/bin/python3", script.string(), tasks_file.string()},
-                            st.o.output_dir / "slurm.txt");
+    const pid_t pid = spawn_process({"/usr/bin/python3", script.string(), tasks_file.string()},
+                                    st.o.output_dir / "slurm.txt");
     int status = 0;
     while (waitpid(pid, &status, 0) < 0) {
         if (errno != EINTR) throw RunError(fmt::format("waitpid failed: {}", std::strerror(errno)));
@@ -152,76 +129,31 @@ void run_on_slurm(Study& st, const std::string& exe) {
     }
 }
 
-/// Up to `jobs` child processes at a time; on SIGINT/SIGTERM no new case starts and the running
-/// ones stop themselves and write what they have. With --resume a completed case is read, a
-/// stopped one continued from its checkpoint.
-void run_locally(Study& st, const std::string& exe) {
-    std::map<pid_t, std::size_t> running;
-    std::size_t next = 0, finished = 0;
-    bool stopping = false;
-    auto start_case = [&](std::size_t k) {
-        const std::filesystem::path dir = st.run_dir(k);
-        const Earlier earlier = st.o.resume ? earlier_run(st.cases[k], dir) : Earlier::none;
-        if (earlier == Earlier::completed) {
-            st.rows[k] = read_study_row(st.cases[k], dir, 0);
-            st.report(k, ++finished, 0);
-            return;
-        }
-        std::filesystem::create_directories(dir);
-        std::vector<std::string> args{exe};
-        if (earlier == Earlier::stopped)
-            args.insert(args.end(), {"run", "--resume", dir.string()});
-        else
-            for (auto& a : st.run_args(k, dir)) args.push_back(a);
-        args.insert(args.end(), {"--threads", std::to_string(st.threads), "--quiet"});
-        if (!st.o.plots) args.push_back("--no-plots");
-        running[spawn(args, dir / "console.txt")] = k;
+/// The cases through the local job pool (app/job_pool.hpp), `jobs` at a time; with --resume a
+/// completed case is read, a stopped one continued from its checkpoint.
+void run_locally(Study& st) {
+    std::vector<PoolTask> tasks;
+    for (std::size_t k = 0; k < st.cases.size(); ++k) {
         const StudyCase& c = st.cases[k];
-        st.say(fmt::format("{} {} ({:.2f} mg/cm2, shrinkage rates x{:g}, seed {})",
-                           earlier == Earlier::stopped ? "resumed" : "started", c.name,
-                           c.areal_loading * 100.0, c.shrinkage_rate_factor, c.seed));
-    };
-    while (finished < st.cases.size()) {
-        while (!stopping && running.size() < std::size_t(st.jobs) && next < st.cases.size())
-            start_case(next++);
-        if (running.empty()) break;
-        int status = 0;
-        const pid_t pid = waitpid(-1, &status, 0);
-        if (pid < 0) {
-            if (errno != EINTR)
-                throw RunError(fmt::format("waitpid failed: {}", std::strerror(errno)));
-            if (stop_requested() && !stopping) {
-                stopping = true;
-                st.say("stop requested: no further runs are started; waiting for the running ones");
-                for (const auto& [p, k] : running) kill(p, SIGTERM);
-            }
-            continue;
-        }
-        const auto it = running.find(pid);
-        if (it == running.end()) continue;
-        const std::size_t k = it->second;
-        running.erase(it);
-        const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        st.rows[k] = read_study_row(st.cases[k], st.run_dir(k), code);
-        st.report(k, ++finished, code);
-        write_study_results(st.o.output_dir, st.base,
-                            st.rows); // a partial table survives a killed study
+        tasks.push_back({st.run_dir(k), st.run_args(k, st.run_dir(k)),
+                         fmt::format("{} ({:.2f} mg/cm2, shrinkage rates x{:g}, seed {})", c.name,
+                                     c.areal_loading * 100.0, c.shrinkage_rate_factor, c.seed)});
     }
-    for (std::size_t k = next; k < st.cases.size(); ++k)
-        st.rows[k] = StudyRow{st.cases[k],
-                              "not started",
-                              "the study was stopped",
-                              {},
-                              {},
-                              {},
-                              {},
-                              0.0,
-                              {},
-                              {},
-                              {},
-                              {},
-                              {},
-                              {}};
+    std::size_t finished = 0;
+    const std::size_t not_started = run_job_pool(
+        self_executable(), tasks, {st.jobs, st.threads, st.o.plots},
+        [&](const std::string& line) { st.say(line); },
+        [&](std::size_t k, int code) {
+            st.rows[k] = read_study_row(st.cases[k], st.run_dir(k), code);
+            st.report(k, ++finished, code);
+            write_study_results(st.o.output_dir, st.base, st.rows); // survives a killed study
+        });
+    for (std::size_t k = st.cases.size() - not_started; k < st.cases.size(); ++k) {
+        st.rows[k] = StudyRow{};
+        st.rows[k].c = st.cases[k];
+        st.rows[k].status = "not started";
+        st.rows[k].error = "the study was stopped";
+    }
 }
 
 /// study.csv / study.json, the statistics per loading, the Fig. 6 plot; exit 1 if a run failed.
@@ -273,18 +205,11 @@ int run_study(const Config& base, const StudyOptions& o) {
                        "with {} thread(s) each; results in {}",
                        base.name, st.cases.size() / std::size_t(seeds) / factors, factors, seeds,
                        st.cases.size(), st.jobs, st.threads, o.output_dir.string()));
-    // Without SA_RESTART, so that SIGINT/SIGTERM interrupt waitpid and reach the running cases.
-    struct sigaction sa {};
-    sa.sa_handler = [](int sig) { request_stop(sig); };
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = 0;
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
-    const std::string exe = self_executable();
+    install_stop_handlers(); // SIGINT/SIGTERM reach the running cases
     if (base.scheduler == "slurm")
-        run_on_slurm(st, exe);
+        run_on_slurm(st, self_executable());
     else
-        run_locally(st, exe);
+        run_locally(st);
     return finish_study(st, start);
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/output/python_script.hpp"
+#include "drydem/io/install_paths.hpp"
 #include <cerrno>
 #include <fcntl.h>
 #include <spawn.h>
@@ -13,8 +14,9 @@ ScriptRun run_python_script(const std::string& script, const std::vector<std::st
                             const std::filesystem::path& log) {
     namespace fs = std::filesystem;
     const std::string python = "/usr/bin/python3";
-    const fs::path file = fs::path(DRYDEM_SOURCE_DIR) / "scripts" / script;
-    if (!fs::exists(python) || !fs::exists(file)) return ScriptRun::unavailable;
+    const fs::path dir = data_dir();
+    const fs::path file = dir / "scripts" / script;
+    if (dir.empty() || !fs::exists(python) || !fs::exists(file)) return ScriptRun::unavailable;
     std::vector<std::string> words{python, file.string()};
     words.insert(words.end(), args.begin(), args.end());
     std::vector<char*> argv;
