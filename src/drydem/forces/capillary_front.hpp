@@ -54,9 +54,11 @@ struct CapillaryFrontLaw {
         ParamLimit<Params>{"surface_tension", &Params::surface_tension},
         ParamLimit<Params>{"contact_angle", &Params::contact_angle, 0.0, std::numbers::pi}};
 
-    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
-                          BodyResistance*) {
-        f.force += capillary_front(g.x.z, g.r, g.liquid_level, p);
+    [[gnu::always_inline]] static inline void add_force(const BodyGeometry& g, const Params& p,
+                                                        State&, double, BodyForce& f,
+                                                        BodyResistance*) {
+        if (p.surface_tension == 0.0) return;
+        f.force.z += capillary_front(g.x.z, g.r, g.liquid_level, p).z;
     }
     static BodyResistance resistance(const BodyGeometry&, const Params&) { return {}; }
     /// -dF/dz = 2πσ s_cap at the floating equilibrium u = cos θ, while the particle can reach

@@ -30,8 +30,9 @@ struct GravityBuoyancyLaw {
     static constexpr std::array limits{ParamLimit<Params>{"gravity", &Params::gravity},
                                        ParamLimit<Params>{"fluid_density", &Params::fluid_density}};
 
-    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
-                          BodyResistance*) {
+    [[gnu::always_inline]] static inline void add_force(const BodyGeometry& g, const Params& p,
+                                                        State&, double, BodyForce& f,
+                                                        BodyResistance*) {
         f.force += gravity_buoyancy(g.r, g.density, p);
     }
     static BodyResistance resistance(const BodyGeometry&, const Params&) { return {}; }

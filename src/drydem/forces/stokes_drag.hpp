@@ -49,8 +49,10 @@ struct StokesDragLaw {
     static constexpr std::string_view name = "stokes_drag";
     static constexpr std::array limits{ParamLimit<Params>{"viscosity", &Params::viscosity}};
 
-    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
-                          BodyResistance* r) {
+    [[gnu::always_inline]] static inline void add_force(const BodyGeometry& g, const Params& p,
+                                                        State&, double, BodyForce& f,
+                                                        BodyResistance* r) {
+        if (p.viscosity == 0.0) return;
         const BodyResistance drag = stokes_drag_resistance(g.r, p);
         if (r) *r += drag;
         f += resistance_force(drag, g.v, g.omega);

@@ -23,8 +23,9 @@ struct SubstrateContactLaw {
     static constexpr std::string_view name = "substrate_contact";
     static constexpr auto limits = HertzMindlinLaw::limits;
 
-    static void add_force(const BodyGeometry& g, const Params& p, State& s, double dt, BodyForce& f,
-                          BodyResistance* damping) {
+    [[gnu::always_inline]] static inline void add_force(const BodyGeometry& g, const Params& p,
+                                                        State& s, double dt, BodyForce& f,
+                                                        BodyResistance* damping) {
         const double overlap = g.r - g.x.z;
         if (overlap <= 0.0 || p.e_star == 0.0) {
             s.spring = {};

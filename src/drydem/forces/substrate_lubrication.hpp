@@ -71,9 +71,11 @@ struct SubstrateLubricationLaw {
         ParamLimit<Params>{"viscosity", &Params::viscosity},
         ParamLimit<Params>{"kappa_c", &Params::kappa_c, 0.0, 1.0, true, false}};
 
-    static void add_force(const BodyGeometry& g, const Params& p, State&, double, BodyForce& f,
-                          BodyResistance* r) {
+    [[gnu::always_inline]] static inline void add_force(const BodyGeometry& g, const Params& p,
+                                                        State&, double, BodyForce& f,
+                                                        BodyResistance* r) {
         const BodyResistance lub = substrate_lubrication_resistance(g.x.z, g.r, p);
+        if (lub.normal == 0.0) return; // off, or beyond κ = 1: adds nothing (not zeros)
         if (r) *r += lub;
         f += resistance_force(lub, g.v, g.omega);
     }
