@@ -191,8 +191,8 @@ void declare_study_calibrate(CommandLine& a) {
                      "[\"run\", CONFIG, ...]}]}")
         ->required()
         ->check(CLI::ExistingFile);
-    a.pool->add_option("--jobs", a.pool_opt.jobs, "runs at a time (default 1)")
-        ->check(CLI::PositiveNumber);
+    a.pool->add_option("--jobs", a.pool_opt.jobs, "runs at a time, 1..1024 (default 1)")
+        ->check(CLI::Range(1, 1024));
     a.pool->add_option("--threads", a.pool_opt.threads, "threads per run (default 1)")
         ->check(CLI::PositiveNumber);
     a.pool->add_flag("--quiet", a.quiet, "print nothing");
@@ -303,7 +303,8 @@ void check_integers(CommandLine& a) {
         a.stop_after = std::int64_t(cli_integer("--stop-after-steps", a.stop_after_text,
                                                 std::numeric_limits<std::int64_t>::max(),
                                                 "a step count 0..9223372036854775807"));
-    for (const int n : {a.study_opt.threads, a.an.threads, a.bench_opt.threads, a.cal_opt.threads})
+    for (const int n : {a.study_opt.threads, a.an.threads, a.bench_opt.threads, a.cal_opt.threads,
+                        a.pool_opt.threads})
         check_threads("--threads", n);
     if (!a.scheduler.empty()) a.sets.push_back("scheduler.type=\"" + a.scheduler + "\"");
     if (a.seed && a.resume_dir.empty()) a.sets.push_back(fmt::format("run.seed={}", *a.seed));
