@@ -199,6 +199,46 @@ TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
     EXPECT_GT(rows.back()[push], 0.0);
 }
 
+// The quasi-static step in the drying run at the process's own settings (k = b = e = 1): the step
+// is set by the displacement and the level's motion, the guard reports the solver, the summary
+// and the time series carry it.
+TEST(DryingEndToEnd, QuasiStaticStepRunsAtTheProcessSettings) {
+    const Config c =
+        load_config(default_config_toml(), "default",
+                    {"run.name=e2e-qs", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
+                     "film.areal_loading=2.5mg/cm^2", "formulation.ncm_diameters=[\"3 um\"]",
+                     "output.snapshot_every=0", "output.timeseries_every=0.01s",
+                     "scaling.scheme=\"force_ratio\"", "scaling.time_factor=1",
+                     "scaling.viscosity_reduction=1", "numerics.integrator=\"quasi_static\""});
+    const auto dir = testing_support::temp_dir();
+    RunOptions o;
+    o.output_dir = dir;
+    o.quiet = true;
+    o.plots = false;
+    o.stop_after_steps = 200;
+    const DryingResult r = run_drying(c, o);
+    EXPECT_EQ(r.stop_reason, "stop_after_steps") << r.error;
+    std::ifstream js(dir / "summary.json");
+    const nlohmann::json s = nlohmann::json::parse(js);
+    EXPECT_EQ(s["integrator"], "quasi_static");
+    // No step above the level's 37.5 nm (5 % of the 0.75 um CB radius) at its fastest, 1.193 um/s.
+    const double cap = 0.05 * 0.75e-6 / 1.193e-6;
+    EXPECT_NEAR(s["time_step_s"].get<double>(), cap, 1e-9 * cap);
+    EXPECT_LE(s["time_step_min_s"].get<double>(), cap);
+    EXPECT_GT(s["time_step_mean_s"].get<double>(), 1e-6); // ~1e5 x the explicit contact step
+    const auto& q = s["quasi_static"];
+    EXPECT_GE(q["solves"].get<double>(), 200.0);
+    EXPECT_GT(q["cg_iterations"].get<double>(), 0.0);
+    EXPECT_LE(q["residual_max"].get<double>(), 1e-4);
+    std::vector<std::string> h;
+    const auto rows = read_csv(dir / "timeseries.csv", h);
+    ASSERT_GE(rows.size(), 2u);
+    const std::size_t it =
+        std::size_t(std::find(h.begin(), h.end(), "solver_iterations") - h.begin());
+    ASSERT_LT(it, h.size());
+    EXPECT_GT(rows.back()[it], 0.0);
+}
+
 // A run that blows up (explicit integrator, time step far above the damping bound, guard set to
 // warn only; the semi-implicit kick stays stable at this step) stops with
 // a diagnosis naming the particle and the cause, and keeps what it wrote: summary.json with

@@ -122,7 +122,7 @@ void print_check(const Config& c) {
 
     // Time-step limits for the smallest particle (M-9.2).
     const TimeScales ts = time_scales(c, r, s, ff);
-    const double cap = c.time_step_cap();
+    const double cap = largest_time_step(c, s);
     fmt::print("\nTime step, smallest particle d = {:.3g} um, m = {:.4g} kg\n", ts.diameter * 1e6,
                ts.mass);
     fmt::print(

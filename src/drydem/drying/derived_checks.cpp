@@ -334,11 +334,11 @@ void check_steps(const Config& c, const FilmRecipe& r, const ScaledParameters& s
                            "would stop before its relaxation window ends",
                            c.relaxation, c.max_process_time),
                {"drying.relaxation", "run.max_process_time"}, bare);
-    const double steps = estimated_travel(c, r, s).sim_time / c.time_step_cap();
+    const double steps = estimated_travel(c, r, s).sim_time / largest_time_step(c, s);
     if (!positive_finite(steps) || steps > max_steps)
         refuse(c,
                fmt::format("the run would take about {:.3g} steps of {:g} s; allowed at most {:g}",
-                           steps, c.time_step_cap(), max_steps),
+                           steps, largest_time_step(c, s), max_steps),
                {"run.time_step", "scaling.time_factor", "drying.relaxation",
                 "dryer.shrinkage_rates", "film.areal_loading"},
                bare);
@@ -405,7 +405,7 @@ DerivedQuantities derived_quantities(const Config& c) {
     d.final_thickness = e.final_thickness;
     d.level_travel = e.travel;
     d.sim_time = e.sim_time;
-    d.steps = d.sim_time / c.time_step_cap();
+    d.steps = d.sim_time / largest_time_step(c, s);
     d.memory_bytes = d.particles * bytes_per_particle + 5e6;
     for (double len : c.dryer_zone_lengths)
         d.dryer_steps += std::ceil(len / c.line_speed / c.dryer_time_step);

@@ -76,7 +76,8 @@ DryingRun::DryingRun(const Config& c, const RunOptions& opt)
       resumed_(opt.resume ? std::optional<RunCheckpoint>(read_run_checkpoint(opt.output_dir))
                           : std::nullopt),
       status_(!opt.quiet && isatty(STDERR_FILENO)), log_(open_folder()), film_(describe_film(c)),
-      sim_(make_simulation()), guard_(guard_policy_of(c.stability_guard), c.time_step_cap(), *log_),
+      sim_(make_simulation()),
+      guard_(guard_policy_of(c.stability_guard), largest_time_step(c, film_.scaled), *log_),
       end_(c.final_gap > 0.0 ? c.final_gap : film_.recipe.largest_diameter(),
            film_.scaled.sim_time(c.relaxation)),
       t_max_(film_.scaled.sim_time(c.max_process_time)), ctx_{c,     opt,     film_,
@@ -111,7 +112,8 @@ Simulation DryingRun::make_simulation() {
                c_.box_y * 1e6, film_.recipe.wet_film_height * 1e6, c_.seed);
     EngineSettings es;
     es.integrator = integrator_of(c_);
-    es.dt = c_.time_step_cap();
+    es.dt = largest_time_step(c_, film_.scaled);
+    es.quasi_static = quasi_static_settings(c_, film_.scaled);
     es.skin = c_.neighbor_skin();
     es.threads = c_.threads;
     es.sort_every = c_.sort_every;
@@ -160,8 +162,8 @@ void DryingRun::start() {
     log_->info(
         "threads {}, integrator {}, dt = {:.3g} s (scaled, cap {:.3g} s), dt*lambda = {:.3g} "
         "(stable < 2), level speeds {} m/s (scaled)",
-        sim_.threads(), c_.integrator, sim_.settings().dt, c_.time_step_cap(), guard_.indicator(),
-        fmt::join(film_.scaled.level_speeds_scaled, ", "));
+        sim_.threads(), c_.integrator, sim_.settings().dt, largest_time_step(c_, film_.scaled),
+        guard_.indicator(), fmt::join(film_.scaled.level_speeds_scaled, ", "));
     const DerivedQuantities plan = derived_quantities(c_);
     const double estimate = estimated_wall_time(plan, sim_.threads());
     if (!resumed_ && estimate > wall_time_warning)

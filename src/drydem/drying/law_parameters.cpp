@@ -92,7 +92,7 @@ StokesDragParams params(For<StokesDragLaw>, const LawInputs& in, const SizeClass
 
 /// Scaled gravity and materials.solvent_density (M-5).
 GravityBuoyancyParams params(For<GravityBuoyancyLaw>, const LawInputs& in, const SizeClass&) {
-    return {in.s.gravity_scaled, in.c.solvent_density};
+    return {in.s.gravity_scaled, in.c.solvent_density, 0.0}; // the film lies flat
 }
 
 /// σ s_cap as simulated and materials.contact_angle (M-6).

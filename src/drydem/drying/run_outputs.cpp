@@ -94,14 +94,14 @@ public:
     const char* name() const override { return "time series"; }
     void open(const StepView& s, bool resumed) override {
         if (resumed) truncate_file(file_, bytes_);
-        writer_.emplace(
-            file_,
-            std::vector<std::string>{"process_time_s", "sim_time_s", "step", "liquid_level_um",
-                                     "film_thickness_um", "film_top_p99_um", "kinetic_energy_J",
-                                     "contacts", "wall_contacts", "max_overlap_rel",
-                                     "particles_at_level", "dt_lambda", "time_step_s", "zone",
-                                     "push_number", "inertial_number", "overlap_p99_rel"},
-            resumed);
+        writer_.emplace(file_,
+                        std::vector<std::string>{
+                            "process_time_s", "sim_time_s", "step", "liquid_level_um",
+                            "film_thickness_um", "film_top_p99_um", "kinetic_energy_J", "contacts",
+                            "wall_contacts", "max_overlap_rel", "particles_at_level", "dt_lambda",
+                            "time_step_s", "zone", "push_number", "inertial_number",
+                            "overlap_p99_rel", "solver_solves", "solver_iterations"},
+                        resumed);
         if (resumed) return;
         row(s);
         trigger_.next = trigger_.every;
@@ -148,7 +148,9 @@ private:
             double(zone + 1),
             load.push_number,
             load.inertial_number,
-            p99};
+            p99,
+            double(s.guard.solver_totals().solves),
+            double(s.guard.solver_totals().iterations)};
         writer_->row(values);
         warn_once(
             warned_overlap_, p99 > overlap_p99_warning,

@@ -124,8 +124,17 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
                                                   c.dryer_preset, c.dryer_final_porosity)
                                     : std::string("dryer.shrinkage_rates");
     s["integrator"] = c.integrator;
-    s["time_step_s"] = c.time_step_cap();
+    s["time_step_s"] = largest_time_step(c, ctx.film.scaled);
     s["time_step_min_s"] = e.guard.min_time_step();
+    if (sim.settings().integrator == Integrator::quasi_static) {
+        const StabilityGuard::SolverTotals& q = e.guard.solver_totals();
+        s["quasi_static"] = {
+            {"max_displacement_m", sim.settings().quasi_static.max_displacement},
+            {"solves", q.solves},
+            {"cg_iterations", q.iterations},
+            {"cg_iterations_per_step", q.steps ? double(q.iterations) / double(q.steps) : 0.0},
+            {"residual_max", q.residual_max}};
+    }
     const std::int64_t steps = e.result.steps;
     s["time_step_mean_s"] = steps > 0 ? sim.time() / double(steps) : 0.0;
     const PhaseTimes& pt = sim.phase_times();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/scaling.hpp"
 #include <nlohmann/json.hpp>
+#include <algorithm>
 
 namespace drydem {
 
@@ -95,7 +96,24 @@ nlohmann::json to_json(const ScaledParameters& s) {
 }
 
 Integrator integrator_of(const Config& c) {
+    if (c.integrator == "quasi_static") return Integrator::quasi_static;
     return c.integrator == "explicit" ? Integrator::explicit_verlet : Integrator::semi_implicit;
+}
+
+double largest_time_step(const Config& c, const ScaledParameters& s) {
+    double cap = c.time_step_cap();
+    if (c.integrator != "quasi_static") return cap;
+    for (double v : s.level_speeds_scaled) cap = std::min(cap, c.max_displacement_value() / v);
+    return cap;
+}
+
+QuasiStaticSettings quasi_static_settings(const Config& c, const ScaledParameters& s) {
+    QuasiStaticSettings q;
+    q.max_step = largest_time_step(c, s);
+    q.max_displacement = c.max_displacement_value();
+    q.tolerance = c.solver_tolerance;
+    q.max_iterations = c.solver_max_iterations;
+    return q;
 }
 
 } // namespace drydem

@@ -49,6 +49,12 @@ Config simulated_config(const Config& c, const ScaledParameters& s);
 
 /// numerics.integrator as the engine's enum.
 Integrator integrator_of(const Config& c);
+/// The largest step of a run [s, simulated]: Config::time_step_cap, and for the quasi-static step
+/// also the time the liquid level takes to move numerics.max_displacement in its fastest zone.
+double largest_time_step(const Config& c, const ScaledParameters& s);
+/// The quasi-static step's settings (numerics.max_displacement, solver_tolerance,
+/// solver_max_iterations; the largest step above).
+QuasiStaticSettings quasi_static_settings(const Config& c, const ScaledParameters& s);
 nlohmann::json to_json(const ScaledParameters& s);
 
 } // namespace drydem

@@ -32,12 +32,18 @@ GuardDecision guard_decision(GuardPolicy policy, double dt, double cap,
 
 void StabilityGuard::start(Simulation& sim) {
     dt_min_ = sim.settings().dt;
+    if (sim.settings().integrator == Integrator::quasi_static) return;
     const std::string refused = check(sim);
     builds_seen_ = sim.neighbors().builds();
     if (!refused.empty()) throw RunError(refused, "stability_guard");
 }
 
 void StabilityGuard::after_step(Simulation& sim) {
+    if (sim.settings().integrator == Integrator::quasi_static) {
+        const std::string refused = check_solver(sim);
+        if (!refused.empty()) throw RunError(refused, "stability_guard");
+        return;
+    }
     if (sim.neighbors().builds() == builds_seen_) return;
     builds_seen_ = sim.neighbors().builds();
     const std::string refused = check(sim);
@@ -77,6 +83,27 @@ std::string StabilityGuard::check(Simulation& sim) {
             "time step {:.3g} s is close to the stability bound: dt*lambda = {:.3g} at particle {}",
             dt, d.indicator, e.particle_id);
     }
+    return {};
+}
+
+std::string StabilityGuard::check_solver(const Simulation& sim) {
+    const QuasiStaticReport& r = sim.quasi_static_report();
+    const double tolerance = sim.settings().quasi_static.tolerance;
+    dt_min_ = std::min(dt_min_, r.dt);
+    ++solver_.steps;
+    solver_.solves += std::uint64_t(r.solves);
+    solver_.iterations += std::uint64_t(r.iterations);
+    solver_.residual_max = std::max(solver_.residual_max, r.residual);
+    if (!(r.residual > tolerance) || r.residual <= 10.0 * warned_) return {};
+    const std::string msg = fmt::format(
+        "quasi-static step {}: the linear solve ended at a relative residual {:.3g} above "
+        "numerics.solver_tolerance = {:.3g} after {} iterations (numerics.solver_max_iterations = "
+        "{}); the step's forces do not balance to that accuracy",
+        sim.step_count(), r.residual, tolerance, r.iterations,
+        sim.settings().quasi_static.max_iterations);
+    if (policy_ == GuardPolicy::refuse) return msg;
+    warned_ = r.residual;
+    log_.warn("{}", msg);
     return {};
 }
 

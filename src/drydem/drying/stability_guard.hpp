@@ -7,6 +7,10 @@
 //   "warn"   only warns (and again only when Δt λ keeps rising above 1.5).
 // The decision is a pure function (guard_decision), tested directly; StabilityGuard applies it to
 // a simulation and keeps what a resumed run needs.
+// The quasi-static step (engine/quasi_static.hpp) has no stability bound to estimate: its step is
+// set by the displacement per step. There the guard watches the linear solve instead: it counts
+// solves and iterations, and where a solve ends above numerics.solver_tolerance "refuse" stops the
+// run and the others warn (again only at a residual ten times the last one warned about).
 #pragma once
 #include "drydem/drying/run_state.hpp"
 #include "drydem/engine/simulation.hpp"
@@ -57,23 +61,36 @@ public:
     [[nodiscard]] double min_time_step() const { return dt_min_; }
     /// Wall time this session spent in the estimates [s].
     [[nodiscard]] double wall_time() const { return wall_; }
+    /// Quasi-static step: linear solves, CG iterations and the largest residual so far.
+    struct SolverTotals {
+        std::uint64_t solves = 0, iterations = 0, steps = 0;
+        double residual_max = 0.0;
+    };
+    [[nodiscard]] const SolverTotals& solver_totals() const { return solver_; }
 
     void fields(StateFields& f) {
         f("guard.dt_min", dt_min_);
         f("guard.indicator", indicator_);
         f("guard.warned_indicator", warned_);
         f("guard.builds_seen", builds_seen_);
+        f("guard.solver_solves", solver_.solves);
+        f("guard.solver_iterations", solver_.iterations);
+        f("guard.solver_steps", solver_.steps);
+        f("guard.solver_residual_max", solver_.residual_max);
     }
 
 private:
     /// Estimates, decides, applies; the message of a refusal is returned (empty: none).
     std::string check(Simulation& sim);
+    /// The quasi-static step's solve, after each step; the message of a refusal (empty: none).
+    std::string check_solver(const Simulation& sim);
 
     GuardPolicy policy_;
     double cap_;
     spdlog::logger& log_;
     double dt_min_ = 0.0, indicator_ = 0.0, warned_ = 0.0, wall_ = 0.0;
     std::uint64_t builds_seen_ = 0;
+    SolverTotals solver_;
 };
 
 } // namespace drydem

@@ -1,22 +1,28 @@
 // SPDX-License-Identifier: MIT
-// An overdamped, linearly implicit step (issue 30, first piece; not yet wired into the drying run).
-// The drying is quasi-static: a particle relaxes in nanoseconds while the level moves ~1 µm/s, so
-// inertia is dropped and every force balances at the end of the step:
-//   F(x + Δt v) - R v = 0,  F(x + Δt v) ≈ F(x) - Δt K v   =>   (R + Δt K) [v; ω] = [F; T](x)
+// The quasi-static step (docs/model.md M-9.1, "Quasi-static step"): a linearly implicit Euler step
+// whose step the contact stiffness does not limit. With every force split into what the laws give
+// at rest, F(x), and the dissipative part -R v, and linearised over the step, F(x + Δt v) ≈
+// F(x) - Δt K v, backward Euler M (v - v₀)/Δt = F(x + Δt v) - R v becomes one linear system
+//     (M/Δt + R + Δt K) [v; ω] = [F; T](x) + M [v₀; ω₀]/Δt
 // R: the resistance of every dissipative law, K: the stiffness of every conservative law, both
-// through the laws' contracts (pair_law.hpp, body_law.hpp), in the pair and body forms of
-// resistance.hpp; F, T: every force at the present positions, at rest. Solved by conjugate
-// gradients, preconditioned with each particle's 6×6 block of R + Δt K. For Δt → ∞ the step is
-// Newton's method on F(x) = 0, so the contact stiffness does not limit Δt; what limits it is
-// accuracy: the largest displacement Δt |v| of a step is held at `max_displacement` (the
-// linearisation's range). The laws' kept states (the tangential springs, Coulomb's cut) advance
-// with the solved velocities over Δt. The van der Waals snap-in enters K with |dF/dh| (its true
-// stiffness is negative), which keeps R + Δt K positive definite and slows the snap.
+// through the laws' contracts (pair_law.hpp, body_law.hpp) in the pair and body forms of
+// resistance.hpp. In the drying film M/Δt is tiny beside R (a particle relaxes in nanoseconds,
+// the step is microseconds), so the step is overdamped and quasi-static: every force balances at
+// its end; M/Δt keeps the system definite for a particle that nothing resists (one above the
+// liquid, out of contact: it falls as it would). For Δt → ∞ the step is Newton's method on
+// F(x) = 0. Solved by conjugate gradients, preconditioned with each particle's 6×6 block, warm
+// started from the last velocities. What limits Δt is accuracy, the range over which the
+// linearisation holds: no particle moves more than `max_displacement` (the capillary and drag
+// forces vary over a radius), and no pair (or particle and substrate) closes by more than
+// `approach` of its gap, a gap counted as at least `approach_floor` of the smaller radius (the
+// lubrication and van der Waals forces vary over the gap itself; once in contact, K holds the
+// pair). The driver also caps Δt so that the liquid level moves no further than
+// `max_displacement` per step. The laws' kept states (tangential springs,
+// Coulomb's cut) advance with the solved velocities. The van der Waals snap-in enters K with
+// |dF/dh| (its true stiffness is negative), which keeps the system definite and slows the snap.
 #pragma once
-#include "drydem/core/box.hpp"
-#include "drydem/core/particles.hpp"
-#include "drydem/forces/force_field.hpp"
-#include "drydem/neighbor/neighbor_list.hpp"
+#include "drydem/engine/linear_operator.hpp"
+#include <cstdint>
 #include <vector>
 
 namespace drydem {
@@ -24,52 +30,39 @@ namespace drydem {
 struct QuasiStaticSettings {
     double max_step = 1e-3;         ///< Δt never above this [s]
     double max_displacement = 1e-9; ///< largest |Δt v| of a step [m]
-    double tolerance = 1e-10;       ///< CG: relative residual |r| / |F|
-    int max_iterations = 1000;      ///< CG iterations per solve
-    double skin = 0.1e-6;           ///< neighbour skin [m]
-    double liquid_level = 1e30;     ///< z_L [m]
+    double approach = 0.5;          ///< a pair closes by at most this fraction of its gap
+    double approach_floor = 0.01;   ///< ... the gap counted as at least this fraction of r_min
+    double tolerance = 1e-8;        ///< CG: relative residual |r| / |b|
+    int max_iterations = 2000;      ///< CG iterations per solve
 };
 
+/// What the last quasi-static step did.
 struct QuasiStaticReport {
     double dt = 0.0;               ///< the step taken [s]
     double max_displacement = 0.0; ///< largest |Δt v| [m]
-    int iterations = 0;            ///< CG iterations of the accepted solve
-    double residual = 0.0;         ///< its relative residual
+    int solves = 0;                ///< linear solves (1 + the retries at a smaller Δt)
+    int iterations = 0;            ///< CG iterations, all solves
+    double residual = 0.0;         ///< relative residual of the accepted solve
 };
 
-class QuasiStaticEngine {
-public:
-    QuasiStaticEngine(ParticleStore particles, Box box, ForceField forces, QuasiStaticSettings s);
-    /// One step: solve, limit the displacement, move, advance the laws' states.
-    QuasiStaticReport step();
-    [[nodiscard]] const ParticleStore& particles() const { return p_; }
-    /// Every force on particle i at rest at the present positions (the residual of equilibrium).
-    [[nodiscard]] Vec3 net_force(std::size_t i) const;
-
-private:
-    struct PairEntry {
+/// The linearised system of one step, per thread (its rows' pairs and particles).
+struct QuasiStaticSystem {
+    struct Pair {
         std::uint32_t i, j, slot;
         PairGeometry g;
-        PairResistance r, k; ///< resistance and stiffness, levers set
+        PairResistance r, k; ///< resistance and stiffness, lever arms set
     };
-    struct BodyEntry {
+    struct Body {
         BodyResistance r, k;
     };
-    void assemble();
-    /// y = (R + dt K) u.
-    void apply(double dt, const std::vector<double>& u, std::vector<double>& y) const;
-    /// CG on (R + dt K) u = f; returns iterations and leaves the relative residual in `residual`.
-    int solve(double dt, std::vector<double>& u, double& residual) const;
-
-    ParticleStore p_;
-    std::vector<BodyState> body_state_;
-    Box box_;
-    ForceField ff_;
-    QuasiStaticSettings s_;
-    NeighborList nl_;
-    std::vector<PairEntry> pairs_;
-    std::vector<BodyEntry> bodies_;
-    std::vector<double> force_; ///< [F; T] per particle at rest
+    std::vector<std::vector<Pair>> pairs; ///< per thread
+    std::vector<Body> bodies;             ///< per particle
+    std::vector<double> force;            ///< [F; T] at rest, 6 per particle
+    std::vector<Operator> a;              ///< M/Δt + R + Δt K, per thread
+    std::vector<SelfBlockInverse> block;  ///< its 6×6 self-blocks, inverted
+    std::vector<std::vector<double>> share, force_share;
+    std::vector<std::vector<SelfBlock>> block_share;
+    std::vector<double> b, u, r, z, d, q, partial; ///< CG work vectors
 };
 
 } // namespace drydem

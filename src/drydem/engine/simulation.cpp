@@ -131,6 +131,7 @@ void Simulation::rebuild_neighbors() {
 
 void Simulation::compute_forces() {
     if (force_rebuild_) rebuild_neighbors();
+    if (quasi_static()) return assemble_quasi_static();
     std::size_t wall_contacts = 0;
     double wall_overlap = 0.0;
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(+ : wall_contacts) reduction(max : wall_overlap)
@@ -355,6 +356,7 @@ void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& 
 }
 
 void Simulation::step() {
+    if (quasi_static()) return step_quasi_static();
     const std::size_t n = p_.size();
     const double dt = settings_.dt, half = 0.5 * dt;
     const bool semi = semi_implicit();

@@ -4,6 +4,7 @@
 #pragma once
 #include "drydem/core/box.hpp"
 #include "drydem/core/particles.hpp"
+#include "drydem/engine/quasi_static.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/neighbor/neighbor_list.hpp"
 #include <cstdint>
@@ -17,6 +18,7 @@ namespace drydem {
 enum class Integrator {
     explicit_verlet, ///< velocity Verlet, every force explicit (the reference; Δt < 2/λ_max of M⁻¹R)
     semi_implicit, ///< v += Δt (M_i + Δt D_i)⁻¹ F_i: the dissipative forces do not limit Δt
+    quasi_static, ///< (M/Δt + R + Δt K) v = F + M v₀/Δt (quasi_static.hpp): nor do the contacts
 };
 
 struct EngineSettings {
@@ -28,6 +30,7 @@ struct EngineSettings {
         1.0; ///< stop when an overlap exceeds this fraction of the smaller radius
     double initial_liquid_level = 1.0e30; ///< z_L at t = 0 [m] (far above: no capillary force)
     Integrator integrator = Integrator::explicit_verlet;
+    QuasiStaticSettings quasi_static{}; ///< the quasi-static step's accuracy and solver
 };
 
 /// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).
@@ -107,6 +110,8 @@ public:
     /// Changes Δt between steps (the stability guard lowers it in dense packings, M-9.2).
     void set_time_step(double dt) { settings_.dt = dt; }
     [[nodiscard]] const StepStats& stats() const { return stats_; }
+    /// The last quasi-static step (zero for the other integrators).
+    [[nodiscard]] const QuasiStaticReport& quasi_static_report() const { return qs_report_; }
     [[nodiscard]] const PhaseTimes& phase_times() const { return times_; }
     [[nodiscard]] int threads() const { return threads_; }
 
@@ -153,6 +158,17 @@ private:
     [[nodiscard]] bool semi_implicit() const {
         return settings_.integrator == Integrator::semi_implicit;
     }
+    [[nodiscard]] bool quasi_static() const {
+        return settings_.integrator == Integrator::quasi_static;
+    }
+    // The quasi-static step (quasi_static.cpp): the linearised system at rest at the present
+    // positions (forces into the store, step statistics), its solve at a step Δt (CG iterations
+    // and relative residual into the report), and the step itself.
+    void assemble_quasi_static();
+    void solve_quasi_static(double dt, QuasiStaticReport& report);
+    /// The largest Δt the solved velocities allow (quasi_static.hpp: displacement, approach).
+    [[nodiscard]] double quasi_static_step_limit() const;
+    void step_quasi_static();
     void check_health();
     void allocate_integrator();
 
@@ -176,6 +192,8 @@ private:
     // forces, permuted with the particles on a re-sort), pair self-blocks, and the resulting
     // accelerations.
     std::vector<BodyResistance> body_resistance_;
+    QuasiStaticSystem qs_;
+    QuasiStaticReport qs_report_;
     std::vector<SelfBlock> block_;
     std::vector<Vec3> accel_, alpha_;
     mutable std::vector<double> guard_vector_[2]; ///< the estimate's work vectors, reused

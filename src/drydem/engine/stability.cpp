@@ -19,6 +19,7 @@
 // λ_max comes from power iteration on M_eff⁻¹ K (a generalised symmetric problem, so the
 // eigenvalues are real and ≥ 0) from a random start, so one cluster's plateau does not hide a
 // worse one elsewhere.
+#include "drydem/engine/linear_operator.hpp"
 #include "drydem/engine/simulation.hpp"
 #include <omp.h>
 #include <algorithm>
@@ -27,43 +28,6 @@
 
 namespace drydem {
 namespace {
-
-struct PairEntry {
-    std::uint32_t i, j;
-    Vec3 n;
-    PairResistance c; ///< resistance or stiffness coefficients, with lever arms
-};
-struct BodyEntry {
-    std::uint32_t i;
-    BodyResistance c;
-};
-struct Operator {
-    std::vector<PairEntry> pairs;
-    std::vector<BodyEntry> bodies;
-    void clear() {
-        pairs.clear();
-        bodies.clear();
-    }
-};
-
-/// y += A x for the operator A (x, y: 6 values per particle, translation then rotation).
-void apply_add(const Operator& a, const std::vector<double>& x, double* y) {
-    auto v = [&](std::uint32_t i) { return Vec3{x[6 * i], x[6 * i + 1], x[6 * i + 2]}; };
-    auto w = [&](std::uint32_t i) { return Vec3{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]}; };
-    auto add = [&](std::uint32_t i, const Vec3& f, const Vec3& t) {
-        y[6 * i] -= f.x, y[6 * i + 1] -= f.y, y[6 * i + 2] -= f.z; // A x = -(force of x)
-        y[6 * i + 3] -= t.x, y[6 * i + 4] -= t.y, y[6 * i + 5] -= t.z;
-    };
-    for (const PairEntry& e : a.pairs) {
-        const PairForce f = resistance_force(e.c, e.n, v(e.i) - v(e.j), w(e.i), w(e.j));
-        add(e.i, f.force_i, f.torque_i);
-        add(e.j, -f.force_i, f.torque_j);
-    }
-    for (const BodyEntry& e : a.bodies) {
-        const BodyForce f = resistance_force(e.c, v(e.i), w(e.i));
-        add(e.i, f.force, f.torque);
-    }
-}
 
 double quadratic(const SelfBlock& d, const Vec3& v, const Vec3& w) {
     const Sym3& a = d.a;
@@ -91,7 +55,8 @@ struct GuardInputs {
     double liquid_level;
     bool semi;
     std::size_t threads;
-    [[nodiscard]] std::size_t lo_of(std::size_t t) const { return p.size() * t / threads; }
+    [[nodiscard]] RowSplit rows() const { return {p.size(), threads}; }
+    [[nodiscard]] std::size_t lo_of(std::size_t t) const { return rows().lo(t); }
 };
 
 /// Thread t collects the entries of the rows [lo_t, hi_t) in its own operators and self-block
@@ -176,10 +141,9 @@ double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
     const ParticleStore& p = in.p;
     const std::size_t n = p.size(), threads = in.threads;
     const bool semi = in.semi;
-    auto lo_of = [&](std::size_t t) { return in.lo_of(t); };
-    std::vector<double> y(6 * n);
-    std::vector<std::vector<double>> y_share(threads > 1 ? threads : 0, std::vector<double>(6 * n));
-    std::vector<double> partial(threads);
+    std::vector<double> y(6 * n), partial;
+    std::vector<std::vector<double>> y_share;
+    const RowSplit rows = in.rows();
     std::mt19937_64 rng(0x5eed ^ step);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     // A fresh random start (seeded by the step) every call, never the last call's vector: the
@@ -188,19 +152,6 @@ double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
     for (double& v : x) v = u(rng);
     const SelfBlock none{};
     auto block = [&](std::size_t i) -> const SelfBlock& { return semi ? blocks[i] : none; };
-    // Σ_i term(i), each thread over its rows, the threads' sums added in order.
-    auto ordered_sum = [&](auto&& term) {
-#pragma omp parallel num_threads(int(threads))
-        {
-            const std::size_t t = std::size_t(omp_get_thread_num());
-            double q = 0.0;
-            for (std::size_t i = lo_of(t); i < lo_of(t + 1); ++i) q += term(i);
-            partial[t] = q;
-        }
-        double q = 0.0;
-        for (double v : partial) q += v;
-        return q;
-    };
     auto mass_norm2 = [&](std::size_t i) {
         const Vec3 v{x[6 * i], x[6 * i + 1], x[6 * i + 2]};
         const Vec3 w{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]};
@@ -209,33 +160,20 @@ double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
     double lambda = 0.0;
     int it = 0;
     for (; it < 60; ++it) {
-        const double q = ordered_sum(mass_norm2);
+        const double q = ordered_sum(rows, mass_norm2, partial);
         if (!(q > 0.0)) break;
         const double scale = 1.0 / std::sqrt(q);
-#pragma omp parallel num_threads(int(threads))
-        {
-            const std::size_t t = std::size_t(omp_get_thread_num());
-            for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) x[k] *= scale;
-#pragma omp barrier
-            // y = A x: each thread applies its rows' entries into its own share of y (all
-            // of y with one thread), then the shares are added in thread order.
-            double* y_t = threads > 1 ? y_share[t].data() : y.data();
-            std::fill(y_t, y_t + 6 * n, 0.0);
-            apply_add(a[t], x, y_t);
-            if (threads > 1) {
-#pragma omp barrier
-                for (std::size_t k = 6 * lo_of(t); k < 6 * lo_of(t + 1); ++k) {
-                    double sum = 0.0;
-                    for (std::size_t v = 0; v < threads; ++v) sum += y_share[v][k];
-                    y[k] = sum;
-                }
-            }
-        }
-        const double rayleigh = ordered_sum([&](std::size_t i) {
-            double r = 0.0;
-            for (std::size_t k = 6 * i; k < 6 * i + 6; ++k) r += x[k] * y[k];
-            return r;
-        });
+#pragma omp parallel for schedule(static) num_threads(int(threads))
+        for (std::size_t k = 0; k < 6 * n; ++k) x[k] *= scale;
+        apply_split(a, rows, x, y, y_share);
+        const double rayleigh = ordered_sum(
+            rows,
+            [&](std::size_t i) {
+                double r = 0.0;
+                for (std::size_t k = 6 * i; k < 6 * i + 6; ++k) r += x[k] * y[k];
+                return r;
+            },
+            partial);
         const bool converged = it >= 8 && std::abs(rayleigh - lambda) < 1e-3 * rayleigh;
         lambda = rayleigh;
         if (converged) break;

@@ -20,6 +20,10 @@
 //                           (body form, spring constants in place of resistances)
 //   keeps(s)                whether s holds something
 //   limits                  the valid interval of each parameter (law_limits.hpp)
+// and optionally, for the quasi-static step, the linearisation given what the law keeps (as for
+// a pair law, pair_law.hpp):
+//   tangent(g, p, s)        -dF/dx at g; without it, stiffness(g, p) (g.reach = 0: the present)
+//   resistance(g, p, s)     the resistance at g; without it, resistance(g, p)
 // Like a pair law, it knows nothing of the application's configuration
 // (drying/law_parameters.cpp maps the configuration to its parameters).
 #pragma once
@@ -97,6 +101,14 @@ struct BodyLawList {
     static BodyResistance stiffness(const BodyGeometry& g, const Params& p) {
         return stiffness_of(all{}, g, p);
     }
+    /// The resistance at g given the kept state s (quasi-static step).
+    static BodyResistance resistance(const BodyGeometry& g, const Params& p, const State& s) {
+        return resistance_kept_of(all{}, g, p, s);
+    }
+    /// The stiffness at g given the kept state s (quasi-static step).
+    static BodyResistance tangent(const BodyGeometry& g, const Params& p, const State& s) {
+        return tangent_of(all{}, g, p, s);
+    }
     static bool keeps(const State& s) { return keeps_of(all{}, s); }
     static std::string_view layout() { return law_layout<Ls...>(); }
 
@@ -125,6 +137,35 @@ private:
                                        const Params& p) {
         BodyResistance k;
         ((k += at<K>::stiffness(g, law_member<K>(p))), ...);
+        return k;
+    }
+    template <std::size_t K>
+    static BodyResistance resistance_kept_at(const BodyGeometry& g, const Params& p,
+                                             const State& s) {
+        if constexpr (requires { at<K>::resistance(g, law_member<K>(p), law_member<K>(s)); })
+            return at<K>::resistance(g, law_member<K>(p), law_member<K>(s));
+        else
+            return at<K>::resistance(g, law_member<K>(p));
+    }
+    template <std::size_t... K>
+    static BodyResistance resistance_kept_of(std::index_sequence<K...>, const BodyGeometry& g,
+                                             const Params& p, const State& s) {
+        BodyResistance r;
+        ((r += resistance_kept_at<K>(g, p, s)), ...);
+        return r;
+    }
+    template <std::size_t K>
+    static BodyResistance tangent_at(const BodyGeometry& g, const Params& p, const State& s) {
+        if constexpr (requires { at<K>::tangent(g, law_member<K>(p), law_member<K>(s)); })
+            return at<K>::tangent(g, law_member<K>(p), law_member<K>(s));
+        else
+            return at<K>::stiffness(g, law_member<K>(p));
+    }
+    template <std::size_t... K>
+    static BodyResistance tangent_of(std::index_sequence<K...>, const BodyGeometry& g,
+                                     const Params& p, const State& s) {
+        BodyResistance k;
+        ((k += tangent_at<K>(g, p, s)), ...);
         return k;
     }
     template <std::size_t... K>

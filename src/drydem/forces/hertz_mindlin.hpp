@@ -105,6 +105,21 @@ struct ContactForce {
     double damping_n, damping_t;
 };
 
+/// Whether a contact at this overlap slides: its spring ξ sits at the Coulomb limit
+/// S_t |ξ| = μ F_n (as the law leaves it after a cut; F_n elastic, at rest), to rounding.
+inline bool hertz_mindlin_sliding(const HertzMindlinCoefficients& co, double overlap,
+                                  const HertzMindlinParams& p, const Vec3& xi) {
+    const double f_coulomb = p.friction * (2.0 / 3.0) * co.s_n * overlap;
+    return co.s_t * norm(xi) >= (1.0 - 1e-6) * f_coulomb && norm2(xi) > 0.0;
+}
+
+/// The quasi-static step's stiffness of a contact (pair form): S_n, and S_t while it sticks; a
+/// sliding contact resists no further tangential motion (its force stays μ F_n).
+inline PairResistance hertz_mindlin_tangent(const HertzMindlinCoefficients& co, double overlap,
+                                            const HertzMindlinParams& p, const Vec3& xi) {
+    return {co.s_n, hertz_mindlin_sliding(co, overlap, p, xi) ? 0.0 : co.s_t, 0.0, 0.0, 0.0, 0.0};
+}
+
 /// Evaluates the Hertz-Mindlin law and advances the tangential history `xi` by one step dt.
 inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const HertzMindlinParams& p,
                                           Vec3& xi, double dt) {
@@ -220,6 +235,19 @@ struct HertzMindlinLaw {
         const HertzMindlinCoefficients co =
             hertz_mindlin_coefficients(closest.r_eff, -closest.gap, closest.m_eff, p);
         return {co.s_n, co.s_t, 0.0, 0.0, 0.0, 0.0};
+    }
+    /// The quasi-static step's resistance: γ_n, and γ_t unless the contact slides.
+    static PairResistance resistance(const PairGeometry& g, const Params& p, const State& s) {
+        if (g.gap >= 0.0) return {};
+        const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, p);
+        const bool slides = hertz_mindlin_sliding(co, -g.gap, p, s.spring);
+        return {co.gamma_n, slides ? 0.0 : co.gamma_t, 0.0, 0.0, 0.0, 0.0};
+    }
+    /// The quasi-static step's stiffness: S_n, and S_t unless the contact slides.
+    static PairResistance tangent(const PairGeometry& g, const Params& p, const State& s) {
+        if (g.gap >= 0.0) return {};
+        const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, p);
+        return hertz_mindlin_tangent(co, -g.gap, p, s.spring);
     }
     /// Any component non-zero (three compares: most list slots are pairs out of reach, where the
     /// pair loop asks this every step).

@@ -23,6 +23,11 @@
 //                           present pair: the law picks the one that bounds its rate
 //   keeps(s)                whether s holds something (carried over list rebuilds, checkpointed)
 //   limits                  the valid interval of each parameter (law_limits.hpp)
+// and optionally, for the quasi-static step (engine/quasi_static.hpp), the linearisation given
+// what the law keeps (a contact whose spring sits at the Coulomb limit slides: it has no
+// tangential stiffness and no tangential damping):
+//   tangent(g, p, s)        -dF/dx at g; without it, stiffness(g, g, p)
+//   resistance(g, p, s)     the resistance at g; without it, resistance(g, p)
 // A law knows nothing of the application's configuration: its parameters are mapped from the
 // configuration in one place, drying/law_parameters.cpp, beside the list's registration.
 // Every law of the list sees the same PairGeometry, computed once per pair. A law's state lives
@@ -115,6 +120,19 @@ struct PairLawList {
         return k;
     }
 
+    /// The resistance at g given the kept state s (quasi-static step).
+    static PairResistance resistance(const PairGeometry& g, const Params& p, const State& s) {
+        PairResistance r = resistance_kept_of(all{}, g, p, s);
+        set_levers(r, g);
+        return r;
+    }
+    /// The stiffness at g given the kept state s (quasi-static step), levers at g.
+    static PairResistance tangent(const PairGeometry& g, const Params& p, const State& s) {
+        PairResistance k = tangent_of(all{}, g, p, s);
+        set_levers(k, g);
+        return k;
+    }
+
     /// Whether any law keeps something for this pair.
     [[gnu::always_inline]] static inline bool keeps(const State& s) { return keeps_of(all{}, s); }
 
@@ -163,6 +181,35 @@ private:
                                        const PairGeometry& now, const Params& p) {
         PairResistance k;
         ((k += at<K>::stiffness(closest, now, member_at<K>(p))), ...);
+        return k;
+    }
+    template <std::size_t K>
+    static PairResistance resistance_kept_at(const PairGeometry& g, const Params& p,
+                                             const State& s) {
+        if constexpr (requires { at<K>::resistance(g, member_at<K>(p), law_member<K>(s)); })
+            return at<K>::resistance(g, member_at<K>(p), law_member<K>(s));
+        else
+            return at<K>::resistance(g, member_at<K>(p));
+    }
+    template <std::size_t... K>
+    static PairResistance resistance_kept_of(std::index_sequence<K...>, const PairGeometry& g,
+                                             const Params& p, const State& s) {
+        PairResistance r;
+        ((r += resistance_kept_at<K>(g, p, s)), ...);
+        return r;
+    }
+    template <std::size_t K>
+    static PairResistance tangent_at(const PairGeometry& g, const Params& p, const State& s) {
+        if constexpr (requires { at<K>::tangent(g, member_at<K>(p), law_member<K>(s)); })
+            return at<K>::tangent(g, member_at<K>(p), law_member<K>(s));
+        else
+            return at<K>::stiffness(g, g, member_at<K>(p));
+    }
+    template <std::size_t... K>
+    static PairResistance tangent_of(std::index_sequence<K...>, const PairGeometry& g,
+                                     const Params& p, const State& s) {
+        PairResistance k;
+        ((k += tangent_at<K>(g, p, s)), ...);
         return k;
     }
     template <std::size_t... K>

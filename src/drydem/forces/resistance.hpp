@@ -58,6 +58,16 @@ inline PairForce resistance_force(const PairResistance& r, const Vec3& n, const 
     return {f, r.lever_i * lever - t_r, r.lever_j * lever + t_r};
 }
 
+/// R + s K of one pair: its resistance and stiffness (same lever arms) as the coefficients of one
+/// operator, the stiffness weighted by s (the quasi-static step's Δt: F(x + Δt v) ≈ F(x) - Δt K v).
+inline PairResistance plus_scaled(PairResistance r, const PairResistance& k, double s) {
+    r.normal += s * k.normal;
+    r.sliding += s * k.sliding;
+    r.rolling += s * k.rolling;
+    r.twisting += s * k.twisting;
+    return r;
+}
+
 /// Coefficients of the body form [kg/s; kg m/s for b; kg m²/s for d_t, d_z].
 struct BodyResistance {
     double normal = 0.0;     ///< a_z
@@ -82,6 +92,16 @@ inline BodyForce resistance_force(const BodyResistance& r, const Vec3& v, const 
                 r.coupling * cross(omega, z_hat),
             r.coupling * cross(z_hat, v_t) +
                 Vec3{-r.rotation_t * omega.x, -r.rotation_t * omega.y, -r.rotation_n * omega.z}};
+}
+
+/// R + s K of one particle's body laws (see the pair form's plus_scaled).
+inline BodyResistance plus_scaled(BodyResistance r, const BodyResistance& k, double s) {
+    r.normal += s * k.normal;
+    r.tangential += s * k.tangential;
+    r.coupling += s * k.coupling;
+    r.rotation_t += s * k.rotation_t;
+    r.rotation_n += s * k.rotation_n;
+    return r;
 }
 
 /// The body form of a contact with the plane z = 0 (normal -ẑ from the particle to the wall)
@@ -158,28 +178,46 @@ inline Vec3 operator*(const Sym3& m, const Vec3& v) {
             m.xz * v.x + m.yz * v.y + m.zz * v.z};
 }
 
-/// Solves (M + s D) [a; α] = [F; T] for the accelerations of one particle, M = diag(m, m, m,
-/// I, I, I). With P = m + s A, Q = I + s B and C = s [k]× (so that the matrix is [[P, C^T],
-/// [C, Q]]), by the Schur complement S = Q - C P⁻¹ C^T: α = S⁻¹ (T - C P⁻¹ F),
-/// a = P⁻¹ (F - C^T α). Two 3×3 inverses by cofactors: two divisions and no square root, so the
-/// solve is not bound by their latency (a 6×6 Cholesky took three times as long).
-inline void solve_self_block(const SelfBlock& d, double s, double mass, double inertia,
-                             const Vec3& force, const Vec3& torque, Vec3& accel, Vec3& alpha) {
+/// (M + s D)⁻¹ of one particle, M = diag(m, m, m, I, I, I), factored once for many solves. With
+/// P = m + s A, Q = I + s B and C = s [k]× (so that the matrix is [[P, C^T], [C, Q]]), by the
+/// Schur complement S = Q - C P⁻¹ C^T: α = S⁻¹ (T - C P⁻¹ F), a = P⁻¹ (F - C^T α). Two 3×3
+/// inverses by cofactors: two divisions and no square root, so the solve is not bound by their
+/// latency (a 6×6 Cholesky took three times as long).
+struct SelfBlockInverse {
+    Sym3 p_inv; ///< P⁻¹
+    Vec3 k;     ///< s k: C x = k × x, C^T x = x × k
+    Sym3 s_inv; ///< S⁻¹
+};
+
+inline SelfBlockInverse factor_self_block(const SelfBlock& d, double s, double mass,
+                                          double inertia) {
     Sym3 p = d.a, q = d.b;
     p.xx *= s, p.yy *= s, p.zz *= s, p.xy *= s, p.xz *= s, p.yz *= s;
     q.xx *= s, q.yy *= s, q.zz *= s, q.xy *= s, q.xz *= s, q.yz *= s;
     p.xx += mass, p.yy += mass, p.zz += mass;
     q.xx += inertia, q.yy += inertia, q.zz += inertia;
     const Sym3 pi = inverse(p);
-    const Vec3 k = s * d.k; // C x = k × x, C^T x = x × k
+    const Vec3 k = s * d.k;
     // C P⁻¹ C^T: columns c_e = k × (P⁻¹ (e × k)) for the unit vectors e.
     const Vec3 cx = cross(k, pi * Vec3{0.0, -k.z, k.y});
     const Vec3 cy = cross(k, pi * Vec3{k.z, 0.0, -k.x});
     const Vec3 cz = cross(k, pi * Vec3{-k.y, k.x, 0.0});
     const Sym3 schur{q.xx - cx.x, q.yy - cy.y, q.zz - cz.z, q.xy - cy.x, q.xz - cz.x, q.yz - cz.y};
-    const Vec3 pf = pi * force;
-    alpha = inverse(schur) * (torque - cross(k, pf));
-    accel = pi * (force - cross(alpha, k));
+    return {pi, k, inverse(schur)};
+}
+
+/// [a; α] = (M + s D)⁻¹ [F; T] with the factored block.
+inline void solve_self_block(const SelfBlockInverse& f, const Vec3& force, const Vec3& torque,
+                             Vec3& accel, Vec3& alpha) {
+    const Vec3 pf = f.p_inv * force;
+    alpha = f.s_inv * (torque - cross(f.k, pf));
+    accel = f.p_inv * (force - cross(alpha, f.k));
+}
+
+/// Solves (M + s D) [a; α] = [F; T] for the accelerations of one particle (one solve).
+inline void solve_self_block(const SelfBlock& d, double s, double mass, double inertia,
+                             const Vec3& force, const Vec3& torque, Vec3& accel, Vec3& alpha) {
+    solve_self_block(factor_self_block(d, s, mass, inertia), force, torque, accel, alpha);
 }
 
 } // namespace drydem

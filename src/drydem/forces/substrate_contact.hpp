@@ -51,6 +51,22 @@ struct SubstrateContactLaw {
         const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r, overlap, g.mass, p);
         return wall_pair_resistance(co.s_n, co.s_t, g.r - overlap);
     }
+    /// The quasi-static step's resistance: γ_n, and γ_t unless the contact slides.
+    static BodyResistance resistance(const BodyGeometry& g, const Params& p, const State& s) {
+        const double overlap = g.r - g.x.z;
+        if (overlap <= 0.0 || p.e_star == 0.0) return {};
+        const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r, overlap, g.mass, p);
+        const bool slides = hertz_mindlin_sliding(co, overlap, p, s.spring);
+        return wall_pair_resistance(co.gamma_n, slides ? 0.0 : co.gamma_t, g.r - overlap);
+    }
+    /// The quasi-static step's stiffness: S_n, and S_t unless the contact slides.
+    static BodyResistance tangent(const BodyGeometry& g, const Params& p, const State& s) {
+        const double overlap = g.r - g.x.z;
+        if (overlap <= 0.0 || p.e_star == 0.0) return {};
+        const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r, overlap, g.mass, p);
+        const PairResistance k = hertz_mindlin_tangent(co, overlap, p, s.spring);
+        return wall_pair_resistance(k.normal, k.sliding, g.r - overlap);
+    }
     static bool keeps(const State& s) {
         return s.spring.x != 0.0 || s.spring.y != 0.0 || s.spring.z != 0.0;
     }

@@ -3,6 +3,7 @@
 // declared once, in io/config_keys.def (the paper's 20.1 mg/cm2 case, model.md M-1 ... M-9): the
 // struct below, the validation, the embedded default text and docs/configuration.md follow from it.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -71,10 +72,20 @@ struct Config {
     std::vector<CalibrationTarget> calibration_targets;
 
     /// The largest time step: time_step, or with 0 the integrator's cap (explicit 1e-11 s, C-23;
-    /// semi-implicit 1e-10 s, the contact limit; docs/model.md "Stability guard").
+    /// semi-implicit 1e-10 s, the contact limit; docs/model.md "Stability guard"; quasi-static
+    /// none here: the level's motion bounds it, drying/scaling.hpp largest_time_step).
     [[nodiscard]] double time_step_cap() const {
         if (time_step > 0.0) return time_step;
+        if (integrator == "quasi_static") return 1.0;
         return integrator == "explicit" ? 1.0e-11 : 1.0e-10;
+    }
+    /// The quasi-static step's largest displacement [m]: max_displacement, or with 0 5 % of the
+    /// smallest particle radius.
+    [[nodiscard]] double max_displacement_value() const {
+        if (max_displacement > 0.0) return max_displacement;
+        double d = cb_diameter;
+        for (double x : ncm_diameters) d = std::min(d, x);
+        return 0.05 * 0.5 * d;
     }
     /// The neighbour skin: skin, or with 0 the integrator's default (explicit 0.1 um, M-9.4;
     /// semi-implicit 0.3 um: at its ~10x longer steps a 0.1 um skin is used up within a few dozen
