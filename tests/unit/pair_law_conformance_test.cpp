@@ -141,9 +141,61 @@ void check_law(const Pair& p, double gap) {
         << where << " sliding stiffness";
 }
 
+/// The quasi-static step's linearisation of law L given the kept state s (pair_law.hpp: the
+/// optional tangent and resistance(g, p, s), else stiffness and resistance).
+template <class L>
+std::pair<PairResistance, PairResistance>
+linearised(const PairGeometry& g, const typename L::Params& lp, const typename L::State& s) {
+    PairResistance r, k;
+    if constexpr (requires { L::resistance(g, lp, s); })
+        r = L::resistance(g, lp, s);
+    else
+        r = L::resistance(g, lp);
+    if constexpr (requires { L::tangent(g, lp, s); })
+        k = L::tangent(g, lp, s);
+    else
+        k = L::stiffness(g, g, lp);
+    return {r, k};
+}
+
+/// With nothing kept the linearisation is resistance() and stiffness(); after a long slide (the
+/// spring cut to Coulomb's limit) the sliding stiffness and damping are what one more history
+/// step and the force at a sliding velocity give: none for a contact that slides.
+template <class L>
+void check_linearisation(const Pair& p, double gap) {
+    const std::string where =
+        std::string(L::name) + ", " + p.name + ", gap " + std::to_string(gap * 1e9) + " nm";
+    const auto& lp = PairLaws::params<L>(p.params);
+    const PairGeometry g = at(p, gap, {});
+    const auto [r0, k0] = linearised<L>(g, lp, typename L::State{});
+    const PairResistance r = L::resistance(g, lp), k = L::stiffness(g, g, lp);
+    EXPECT_EQ(r0.normal, r.normal) << where;
+    EXPECT_EQ(r0.sliding, r.sliding) << where;
+    EXPECT_EQ(k0.normal, k.normal) << where;
+    EXPECT_EQ(k0.sliding, k.sliding) << where;
+    // Slide: 1 um along t in one step, far beyond any spring's Coulomb limit.
+    const Vec3 t = perp(Vec3{1.0, 0.0, 0.0}, kNormal) / norm(perp(Vec3{1.0, 0.0, 0.0}, kNormal));
+    typename L::State s{};
+    PairForce f{};
+    L::add_force(at(p, gap, {1.0 * t, {}, {}, {}}), lp, s, 1e-6, f, nullptr);
+    const auto [r1, k1] = linearised<L>(g, lp, s);
+    // Two more steps in the same direction: the force's change per displacement, and the damping
+    // the law reports while it keeps sliding.
+    const double dt = 1e-12, v = 1e-4;
+    PairResistance reported{};
+    PairForce f1{}, f2{};
+    L::add_force(at(p, gap, {v * t, {}, {}, {}}), lp, s, dt, f1, &reported);
+    L::add_force(at(p, gap, {v * t, {}, {}, {}}), lp, s, dt, f2, nullptr);
+    const double spring = -dot(f2.force_i - f1.force_i, t) / (v * dt);
+    EXPECT_NEAR(k1.sliding, spring, 1e-6 * std::abs(k.sliding) + 1e-9) << where << " sliding";
+    EXPECT_EQ(k1.normal, k.normal) << where;
+    EXPECT_EQ(r1.sliding, reported.sliding) << where << " sliding damping";
+}
+
 template <std::size_t... K>
 void check_every_law(const Pair& p, double gap, std::index_sequence<K...>) {
     (check_law<std::tuple_element_t<K, AllLaws>>(p, gap), ...);
+    (check_linearisation<std::tuple_element_t<K, AllLaws>>(p, gap), ...);
 }
 
 TEST(PairLawConformance, EveryLawOfTheListKeepsTheContract) {
