@@ -74,6 +74,18 @@ void print_groups(const DimensionlessGroups& d) {
 
 } // namespace
 
+/// What sets the quasi-static step (docs/model.md M-9.1).
+void print_quasi_static_step(const Config& c, const ScaledParameters& s) {
+    const QuasiStaticSettings q = quasi_static_settings(c, s);
+    fmt::print("  quasi-static step          set by accuracy, not by the contacts: the level "
+               "moves <= {:.3g} um per step (that largest step), no particle more than {:.3g} "
+               "um, no gap closes by more than {:.0f} % (counted as >= {:.0f} % of the smaller "
+               "radius); linear solve to a relative residual {:.3g} within {} CG "
+               "iterations (docs/model.md M-9.1)\n",
+               q.max_displacement * 1e6, q.max_displacement * 1e6, 100 * q.approach,
+               100 * q.approach_floor, q.tolerance, q.max_iterations);
+}
+
 void print_check(const Config& c) {
     const FilmRecipe r = make_recipe(c);
     const ScaledParameters s = scale_parameters(c);
@@ -128,16 +140,7 @@ void print_check(const Config& c) {
     fmt::print(
         "  integrator                {} (numerics.integrator), largest step {:.3g} s (scaled)\n",
         c.integrator, cap);
-    if (c.integrator == "quasi_static") {
-        const QuasiStaticSettings q = quasi_static_settings(c, s);
-        fmt::print("  quasi-static step          set by accuracy, not by the contacts: the level "
-                   "moves <= {:.3g} um per step (that largest step), no particle more than {:.3g} "
-                   "um, no gap closes by more than {:.0f} % (counted as >= {:.0f} % of the smaller "
-                   "radius); linear solve to a relative residual {:.3g} within {} CG "
-                   "iterations (docs/model.md M-9.1)\n",
-                   q.max_displacement * 1e6, q.max_displacement * 1e6, 100 * q.approach,
-                   100 * q.approach_floor, q.tolerance, q.max_iterations);
-    }
+    if (c.integrator == "quasi_static") print_quasi_static_step(c, s);
     fmt::print("  Rayleigh time             {:.3g} s (0.2 T_R = {:.3g} s)\n", ts.rayleigh,
                0.2 * ts.rayleigh);
     fmt::print("  Hertz contact time        {:.3g} s at 1 m/s, {:.3g} s at the level speed\n",
