@@ -15,6 +15,10 @@
 #               k b = 9e8); with q_base (k b = 9e7) two decades of the Stokes number
 #   q_ecb400    CB Young's modulus 400 GPa instead of 142, at e = 24 (p99 overlap 0.2 %; against q_e24)
 #   q_dt_half   run.time_step at half of q_base's mean step
+#   q_qs        the quasi-static step (numerics.integrator, docs/model.md M-9.1) at the process's
+#               own settings, k = b = e = 1 (against q_e24: the Stokes number and the overlap
+#               differ); q_qs_tol3 its solver tolerance 1e-3 (default 1e-4); q_qs_d75 its
+#               displacement per step 75 nm (default 37.5 nm, 5 % of r_CB)
 #   archive:STEP
 #               the runs STEP has finished so far into the archive
 #
@@ -44,6 +48,8 @@ study() {  # $1 step, $2 example config, rest: drydem study arguments
 }
 
 fr=quick_force_ratio.toml
+qs=(--set numerics.integrator=quasi_static --set scaling.time_factor=1 --set scaling.viscosity_reduction=1
+    --set scaling.stiffness_factor=1)
 for step in "$@"; do
   echo "== $step ($(date -u +%H:%M))" >&2
   case $step in
@@ -58,6 +64,9 @@ for step in "$@"; do
     q_b316) study q_b316 $fr --set scaling.time_factor=2.846e6 --set scaling.viscosity_reduction=316.23 ;;
     q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa --set scaling.stiffness_factor=24 ;;
     q_dt_half) study q_dt_half $fr --set "run.time_step=${DT_HALF:?set DT_HALF to half the mean step of q_base}" ;;
+    q_qs) study q_qs $fr "${qs[@]}" ;;
+    q_qs_tol3) study q_qs_tol3 $fr "${qs[@]}" --set numerics.solver_tolerance=1e-3 ;;
+    q_qs_d75) study q_qs_d75 $fr "${qs[@]}" --set numerics.max_displacement=75nm ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac

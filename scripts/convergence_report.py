@@ -35,8 +35,16 @@ SERIES = {
     "Stokes knob: k b at f = k/b = 9e3": ("q_base", [("q_b33", 1e7), ("q_base", 9e7), ("q_b316", 9e8)]),
     "CB Young's modulus (GPa), at e = 24": ("q_e24", [("q_e24", 142), ("q_ecb400", 400)]),
     "time step": ("q_base", [("q_base", 1.0), ("q_dt_half", 0.5)]),
+    # The quasi-static step (issue 30) at the process's own settings (k = b = e = 1): against the
+    # explicit reference at e = 24 (the Stokes number of the largest NCM, zone 2, is the knob that
+    # differs, with the overlap), and its own two knobs.
+    "integrator: explicit at St 0.36 (e = 24) vs quasi-static at the process's St": (
+        "q_e24", [("q_e24", 0.356), ("q_qs", 3.96e-9)]),
+    "solver tolerance of the quasi-static step": ("q_qs", [("q_qs", 1e-4), ("q_qs_tol3", 1e-3)]),
+    "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
-STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_dt_half"]
+STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_dt_half",
+         "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
 def leaves_level(run_dir: Path, after_s: float):
@@ -68,7 +76,8 @@ def yardstick(r):
         "stokes": zone2["stokes_number_largest_ncm"], "overlap_expected": zone2["hertz_overlap_ncm_cb_capillary"],
         "push": zone2["push_number"], "wall": r["wall_time_s"], "steps": r["steps"],
         "dt": r["time_step_mean_s"], "k": r["scaling"]["time_factor_k"], "b": r["scaling"]["viscosity_reduction_b"],
-        "e": r["scaling"].get("stiffness_factor_e", 1.0), "scheme": r["scaling"].get("scheme", "paper"),
+        "e": r["scaling"].get("stiffness_factor_e", 1.0), "scheme": r["scaling"].get("scheme", "paper") + (
+            " (quasi-static)" if r.get("integrator") == "quasi_static" else ""),
     }
 
 
