@@ -167,7 +167,7 @@ void print_check(const Config& c) {
     const double wall = estimated_wall_time(d, cores);
     fmt::print(
         "  wall time                 ~{:.3g} h on {} cores at {:.3g} particle-steps/s per core{}\n",
-        wall / 3600, cores, reference_particle_steps_per_core,
+        wall / 3600, cores, d.particle_steps_per_core,
         wall > wall_time_warning ? "; warning: more than a day (`drydem run` warns too)" : "");
     const double memory = double(r.particle_count()) * bytes_per_particle + 5e6;
     fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers){}\n",

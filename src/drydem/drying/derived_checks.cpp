@@ -391,7 +391,7 @@ TimeScales time_scales(const Config& c, const FilmRecipe& r, const ScaledParamet
 }
 
 double estimated_wall_time(const DerivedQuantities& d, int threads) {
-    return d.steps * d.particles / (reference_particle_steps_per_core * std::max(1, threads));
+    return d.steps * d.particles / (d.particle_steps_per_core * std::max(1, threads));
 }
 
 DerivedQuantities derived_quantities(const Config& c) {
@@ -406,6 +406,9 @@ DerivedQuantities derived_quantities(const Config& c) {
     d.level_travel = e.travel;
     d.sim_time = e.sim_time;
     d.steps = d.sim_time / largest_time_step(c, s);
+    d.particle_steps_per_core = c.integrator == "quasi_static"
+                                    ? reference_quasi_static_particle_steps_per_core
+                                    : reference_particle_steps_per_core;
     d.memory_bytes = d.particles * bytes_per_particle + 5e6;
     for (double len : c.dryer_zone_lengths)
         d.dryer_steps += std::ceil(len / c.line_speed / c.dryer_time_step);

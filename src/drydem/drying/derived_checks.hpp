@@ -32,15 +32,20 @@ struct DerivedQuantities {
     double final_thickness = 0.0; ///< at an uncalendered density (setup/solids.hpp) [m] (M-8.3)
     double level_travel = 0.0;    ///< of the liquid level until the end criterion [m] (M-8.3)
     double sim_time = 0.0;        ///< estimated simulated time of the run [s] (M-8.3)
-    double steps = 0.0;           ///< sim_time / run.time_step
-    double memory_bytes = 0.0;    ///< particles x bytes_per_particle + 5 MB
-    double dryer_steps = 0.0;     ///< RK4 steps of the dryer model over all zones
+    double steps = 0.0;           ///< sim_time / the largest step
+    double particle_steps_per_core = 0.0; ///< the rate the wall time is estimated at [1/s]
+    double memory_bytes = 0.0;            ///< particles x bytes_per_particle + 5 MB
+    double dryer_steps = 0.0;             ///< RK4 steps of the dryer model over all zones
 };
 
 /// Particle-steps per second and core a run is estimated at (the semi-implicit paper scheme
 /// measured 2.3e6-3.4e6 on one core of the 2-core reference machine, docs/performance.md); a
 /// run whose estimate passes a day is warned about.
 inline constexpr double reference_particle_steps_per_core = 2e6;
+/// The same for the quasi-static step, counted in its largest steps (the level's): the quick case
+/// at the process's settings took ~3x as many steps, at 2.6e4-5.8e4 particle-steps/s on one core
+/// (CG iterations per step grow with the contacts; docs/performance.md, "Quasi-static step").
+inline constexpr double reference_quasi_static_particle_steps_per_core = 1e4;
 inline constexpr double wall_time_warning = 86400.0; ///< [s]
 
 /// parse_config, then check_derived_quantities: a configuration every command can run.
@@ -52,7 +57,7 @@ Config load_config_file(const std::string& path, const std::vector<std::string>&
 [[nodiscard]] DerivedQuantities derived_quantities(const Config& c);
 
 /// Estimated wall time of the run's DEM part on `threads` cores [s]: steps at the largest step x
-/// particles / (reference_particle_steps_per_core x threads); the guard may lower the step.
+/// particles / (the integrator's particle-steps per core x threads); the guard may lower the step.
 [[nodiscard]] double estimated_wall_time(const DerivedQuantities& d, int threads);
 
 /// Voxels of the end-of-run voxel image (analysis.voxel_size) for a film of this thickness [m].

@@ -173,7 +173,7 @@ void DryingRun::start() {
                    "run.time_step and "
                    "the box (`drydem check`)",
                    estimate / 86400.0, sim_.threads(), plan.steps * plan.particles,
-                   reference_particle_steps_per_core);
+                   plan.particle_steps_per_core);
     const StepView at = view(false, 0);
     for (auto& o : outputs_) o->open(at, resumed_.has_value());
 }
