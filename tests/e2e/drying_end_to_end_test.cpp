@@ -37,6 +37,40 @@ std::vector<std::vector<double>> read_csv(const std::filesystem::path& file,
     }
     return rows;
 }
+/// The thin film of the stopped runs below (2.5 mg/cm², 36 µm box, one 3 µm NCM class, 2 threads,
+/// no snapshots, a time-series row every 0.01 s), with `extra` overrides.
+Config thin_film(std::vector<std::string> extra) {
+    std::vector<std::string> o{"run.threads=2",
+                               "film.box_x=36um",
+                               "film.box_y=36um",
+                               "film.areal_loading=2.5mg/cm^2",
+                               "formulation.ncm_diameters=[\"3 um\"]",
+                               "output.snapshot_every=0",
+                               "output.timeseries_every=0.01s"};
+    o.insert(o.end(), extra.begin(), extra.end());
+    return load_config(default_config_toml(), "default", o);
+}
+/// Runs c into dir, stopped after `steps` steps (--stop-after-steps); its summary.json.
+nlohmann::json run_stopped(const Config& c, const std::filesystem::path& dir, std::int64_t steps) {
+    RunOptions o;
+    o.output_dir = dir;
+    o.quiet = true;
+    o.plots = false;
+    o.stop_after_steps = steps;
+    const DryingResult r = run_drying(c, o);
+    EXPECT_FALSE(r.completed);
+    EXPECT_NE(r.error.find("--stop-after-steps"), std::string::npos) << r.error;
+    EXPECT_EQ(r.stop_reason, "stop_after_steps");
+    std::ifstream js(dir / "summary.json");
+    return nlohmann::json::parse(js);
+}
+/// The last time-series row's value of `column` (NaN where there is no such column or row).
+double last_of(const std::filesystem::path& dir, const std::string& column) {
+    std::vector<std::string> h;
+    const auto rows = read_csv(dir / "timeseries.csv", h);
+    const std::size_t k = std::size_t(std::find(h.begin(), h.end(), column) - h.begin());
+    return rows.size() >= 2 && k < h.size() ? rows.back()[k] : NAN;
+}
 DryingResult run_quietly(const Config& c, const std::filesystem::path& dir) {
     RunOptions o;
     o.output_dir = dir;
@@ -161,24 +195,10 @@ TEST(DryingEndToEnd, ThinFilmFollowsLevelConsolidatesAndKeepsEveryParticle) {
 // the laws got the scaled values, and every force ratio of the simulated film is the process's.
 TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
     const Config c =
-        load_config(default_config_toml(), "default",
-                    {"run.name=e2e-fr", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
-                     "film.areal_loading=2.5mg/cm^2", "formulation.ncm_diameters=[\"3 um\"]",
-                     "output.snapshot_every=0", "output.timeseries_every=0.01s",
-                     "scaling.scheme=\"force_ratio\"", "scaling.time_factor=1e6",
-                     "scaling.viscosity_reduction=100", "scaling.stiffness_factor=2"});
+        thin_film({"run.name=e2e-fr", "scaling.scheme=\"force_ratio\"", "scaling.time_factor=1e6",
+                   "scaling.viscosity_reduction=100", "scaling.stiffness_factor=2"});
     const auto dir = testing_support::temp_dir();
-    RunOptions o;
-    o.output_dir = dir;
-    o.quiet = true;
-    o.plots = false;
-    o.stop_after_steps = 3000;
-    const DryingResult r = run_drying(c, o);
-    EXPECT_FALSE(r.completed);
-    EXPECT_NE(r.error.find("--stop-after-steps"), std::string::npos) << r.error;
-    EXPECT_EQ(r.stop_reason, "stop_after_steps");
-    std::ifstream js(dir / "summary.json");
-    const nlohmann::json s = nlohmann::json::parse(js);
+    const nlohmann::json s = run_stopped(c, dir, 3000);
     EXPECT_EQ(s["scaling"]["scheme"], "force_ratio");
     EXPECT_NEAR(s["scaling"]["capillary_factor"].get<double>(), 1e4, 1e-6);
     EXPECT_NEAR(s["scaling"]["hamaker_cb_cb_J"]["scaled"].get<double>(), 4.64e-16, 1e-24);
@@ -191,12 +211,7 @@ TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
                         1e-9 * zone["physical"][g].get<double>())
                 << g;
     // The time series measures the level's load from the first row on.
-    std::vector<std::string> h;
-    const auto rows = read_csv(dir / "timeseries.csv", h);
-    ASSERT_GE(rows.size(), 2u);
-    const std::size_t push = std::size_t(std::find(h.begin(), h.end(), "push_number") - h.begin());
-    ASSERT_LT(push, h.size());
-    EXPECT_GT(rows.back()[push], 0.0);
+    EXPECT_GT(last_of(dir, "push_number"), 0.0);
 }
 
 // The quasi-static step in the drying run at the process's own settings (k = b = e = 1): the step
@@ -204,22 +219,10 @@ TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
 // and the time series carry it.
 TEST(DryingEndToEnd, QuasiStaticStepRunsAtTheProcessSettings) {
     const Config c =
-        load_config(default_config_toml(), "default",
-                    {"run.name=e2e-qs", "run.threads=2", "film.box_x=36um", "film.box_y=36um",
-                     "film.areal_loading=2.5mg/cm^2", "formulation.ncm_diameters=[\"3 um\"]",
-                     "output.snapshot_every=0", "output.timeseries_every=0.01s",
-                     "scaling.scheme=\"force_ratio\"", "scaling.time_factor=1",
-                     "scaling.viscosity_reduction=1", "numerics.integrator=\"quasi_static\""});
+        thin_film({"run.name=e2e-qs", "scaling.scheme=\"force_ratio\"", "scaling.time_factor=1",
+                   "scaling.viscosity_reduction=1", "numerics.integrator=\"quasi_static\""});
     const auto dir = testing_support::temp_dir();
-    RunOptions o;
-    o.output_dir = dir;
-    o.quiet = true;
-    o.plots = false;
-    o.stop_after_steps = 200;
-    const DryingResult r = run_drying(c, o);
-    EXPECT_EQ(r.stop_reason, "stop_after_steps") << r.error;
-    std::ifstream js(dir / "summary.json");
-    const nlohmann::json s = nlohmann::json::parse(js);
+    const nlohmann::json s = run_stopped(c, dir, 200);
     EXPECT_EQ(s["integrator"], "quasi_static");
     // No step above the level's 37.5 nm (5 % of the 0.75 um CB radius) at its fastest, 1.193 um/s.
     const double cap = 0.05 * 0.75e-6 / 1.193e-6;
@@ -230,13 +233,7 @@ TEST(DryingEndToEnd, QuasiStaticStepRunsAtTheProcessSettings) {
     EXPECT_GE(q["solves"].get<double>(), 200.0);
     EXPECT_GT(q["cg_iterations"].get<double>(), 0.0);
     EXPECT_LE(q["residual_max"].get<double>(), 1e-4);
-    std::vector<std::string> h;
-    const auto rows = read_csv(dir / "timeseries.csv", h);
-    ASSERT_GE(rows.size(), 2u);
-    const std::size_t it =
-        std::size_t(std::find(h.begin(), h.end(), "solver_iterations") - h.begin());
-    ASSERT_LT(it, h.size());
-    EXPECT_GT(rows.back()[it], 0.0);
+    EXPECT_GT(last_of(dir, "solver_iterations"), 0.0);
 }
 
 // A run that blows up (explicit integrator, time step far above the damping bound, guard set to
