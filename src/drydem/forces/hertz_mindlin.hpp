@@ -83,6 +83,10 @@ inline HertzMindlinCoefficients hertz_mindlin_coefficients(double r_eff, double 
     return {2.0 * p.e_star * sqrt_rd, 8.0 * p.g_star * sqrt_rd, p.damping_n * root,
             p.damping_t * root};
 }
+/// The elastic normal force (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ (M-2.2).
+inline double hertz_elastic_force(const HertzMindlinCoefficients& co, double overlap) {
+    return (2.0 / 3.0) * co.s_n * overlap;
+}
 
 /// Contact state of the shared law below: overlap δ > 0, lever arms from the centres to the
 /// contact point, R*, m*, normal n (from i toward the partner) and the kinematics.
@@ -109,7 +113,7 @@ struct ContactForce {
 /// S_t |ξ| = μ F_n (as the law leaves it after a cut; F_n elastic, at rest), to rounding.
 inline bool hertz_mindlin_sliding(const HertzMindlinCoefficients& co, double overlap,
                                   const HertzMindlinParams& p, const Vec3& xi) {
-    const double f_coulomb = p.friction * (2.0 / 3.0) * co.s_n * overlap;
+    const double f_coulomb = p.friction * hertz_elastic_force(co, overlap);
     return co.s_t * norm(xi) >= (1.0 - 1e-6) * f_coulomb && norm2(xi) > 0.0;
 }
 
@@ -125,13 +129,13 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
                                           Vec3& xi, double dt) {
     const Vec3& n = k.n;
     const HertzMindlinCoefficients co = hertz_mindlin_coefficients(k.r_eff, k.overlap, k.m_eff, p);
-    const double s_n = co.s_n, s_t = co.s_t;
+    const double s_t = co.s_t;
     const double gamma_n = co.gamma_n; // 2 sqrt(5/6) β sqrt(S_n m*)
     const double gamma_t = co.gamma_t; // 2 sqrt(5/6) β sqrt(S_t m*)
 
     const double v_n = dot(k.v_rel, n);
     // M-2.2: elastic (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ, plus viscous damping; not clipped.
-    const double fn_mag = (2.0 / 3.0) * s_n * k.overlap + gamma_n * v_n;
+    const double fn_mag = hertz_elastic_force(co, k.overlap) + gamma_n * v_n;
     ContactForce out;
     out.normal_force = std::abs(fn_mag);
     out.damping_n = gamma_n;
