@@ -30,17 +30,25 @@ struct Particle {
     double r, m, density;
 };
 
+/// Where the liquid level and the calendering plate stand.
+struct Surfaces {
+    double level;
+    double plate = INFINITY;
+};
+
 struct Film {
     std::vector<Particle> particles;
     std::vector<BodyParams> params;
     double level;
 };
 
-/// The film's largest NCM and CB with their body laws as the drying run makes them.
-Film film() {
+/// The film's largest NCM and CB with their body laws as the drying run makes them (or, with
+/// `calendering`, as the calendering run does: the plate on, no liquid).
+Film film(bool calendering = false) {
     Config c;
     const FilmRecipe rec = make_recipe(c);
-    const ForceField ff = make_drying_force_field(c, rec, scale_parameters(c));
+    const ForceField ff = calendering ? make_calendering_force_field(c, rec)
+                                      : make_drying_force_field(c, rec, scale_parameters(c));
     Film f;
     for (int s : {rec.cb_species() - 1, rec.cb_species()}) {
         const SizeClass& k = rec.species[std::size_t(s)];
@@ -53,13 +61,13 @@ Film film() {
 }
 
 template <class List, class L>
-BodyForce force_of(const typename List::Params& p, const Particle& q, double level, const Vec3& x,
-                   const Vec3& v = {}, const Vec3& w = {}, double dt = 0.0,
+BodyForce force_of(const typename List::Params& p, const Particle& q, const Surfaces& level,
+                   const Vec3& x, const Vec3& v = {}, const Vec3& w = {}, double dt = 0.0,
                    BodyResistance* r = nullptr) {
     typename L::State s{};
     BodyForce f{};
-    L::add_force({x, v, w, q.r, q.m, q.density, level, 0.0}, List::template params<L>(p), s, dt, f,
-                 r);
+    L::add_force({x, v, w, q.r, q.m, q.density, level.level, 0.0, level.plate},
+                 List::template params<L>(p), s, dt, f, r);
     return f;
 }
 
@@ -69,7 +77,7 @@ void expect_close(const Vec3& a, const Vec3& b, double tol, const std::string& w
 }
 
 template <class List, class L>
-void check_law(const typename List::Params& p, const Particle& q, double level, double z) {
+void check_law(const typename List::Params& p, const Particle& q, const Surfaces& level, double z) {
     const std::string where =
         std::string(L::name) + ", " + q.name + ", z/r " + std::to_string(z / q.r);
     const auto& lp = List::template params<L>(p);
@@ -86,7 +94,8 @@ void check_law(const typename List::Params& p, const Particle& q, double level, 
     expect_close(shifted.torque, moving.torque, tol * q.r, where + " shifted torque");
 
     // The dissipative part is resistance() on the velocities, and add_force reports it.
-    const BodyResistance r = L::resistance({x, {}, {}, q.r, q.m, q.density, level, 0.0}, lp);
+    const BodyResistance r =
+        L::resistance({x, {}, {}, q.r, q.m, q.density, level.level, 0.0, level.plate}, lp);
     BodyResistance reported{};
     (void)force_of<List, L>(p, q, level, x, v, w, 0.0, &reported);
     EXPECT_NEAR(reported.normal, r.normal, 1e-12 * r.normal) << where;
@@ -98,7 +107,8 @@ void check_law(const typename List::Params& p, const Particle& q, double level, 
                  where + " dissipative torque");
 
     // Stiffness: -dF_z/dz by central differences, where the law declares one; none elsewhere.
-    const BodyResistance k = L::stiffness({x, {}, {}, q.r, q.m, q.density, level, 0.0}, lp);
+    const BodyResistance k =
+        L::stiffness({x, {}, {}, q.r, q.m, q.density, level.level, 0.0, level.plate}, lp);
     const double h = 1e-6 * q.r;
     const double dfdz = (force_of<List, L>(p, q, level, x + Vec3{0, 0, h}).force.z -
                          force_of<List, L>(p, q, level, x - Vec3{0, 0, h}).force.z) /
@@ -131,8 +141,8 @@ void check_limits(const typename L::Params& valid) {
 }
 
 template <class List, std::size_t... K>
-void check_every_law(const typename List::Params& p, const Particle& q, double level, double z,
-                     std::index_sequence<K...>) {
+void check_every_law(const typename List::Params& p, const Particle& q, const Surfaces& level,
+                     double z, std::index_sequence<K...>) {
     (check_law<List, std::tuple_element_t<K, typename List::Laws>>(p, q, level, z), ...);
 }
 template <class List, std::size_t... K>
@@ -143,7 +153,7 @@ void check_every_limit(const typename List::Params& p, std::index_sequence<K...>
 }
 
 template <class List>
-void walk(const typename List::Params& p, const Particle& q, double level,
+void walk(const typename List::Params& p, const Particle& q, const Surfaces& level,
           std::initializer_list<double> heights) {
     constexpr auto all = std::make_index_sequence<std::tuple_size_v<typename List::Laws>>{};
     for (double z : heights) check_every_law<List>(p, q, level, z, all);
@@ -157,16 +167,29 @@ TEST(BodyLawConformance, EveryLawOfTheListKeepsTheContract) {
         const double theta = law<CapillaryFrontLaw>(f.params[k]).contact_angle;
         // In overlap with the substrate, in its lubrication range, floating in the level
         // (u = cos θ), and far from both.
-        walk<BodyLaws>(f.params[k], q, f.level,
+        walk<BodyLaws>(f.params[k], q, {f.level},
                        {0.98 * q.r, 1.3 * q.r, f.level - q.r * std::cos(theta), 0.5 * f.level});
     }
 }
 
+TEST(BodyLawConformance, TheCalenderingPlateKeepsTheContract) {
+    const Film f = film(true);
+    const double plate = 40e-6;
+    for (std::size_t k = 0; k < f.particles.size(); ++k) {
+        const Particle& q = f.particles[k];
+        EXPECT_GT(law<PlateContactLaw>(f.params[k]).e_star, 0.0);
+        // Below the NCM contacts' yield (δ_y = 1.7 % of r against a wall): in overlap with the
+        // substrate, with the plate, and between the two.
+        walk<BodyLaws>(f.params[k], q, {-1.0, plate},
+                       {0.99 * q.r, plate - 0.99 * q.r, 0.5 * plate});
+    }
+}
+
 TEST(BodyLawConformance, TheWalkCoversTheList) {
-    EXPECT_EQ(std::tuple_size_v<BodyLaws::Laws>, 5u);
+    EXPECT_EQ(std::tuple_size_v<BodyLaws::Laws>, 6u);
     const std::string layout(BodyLaws::layout());
-    for (const char* name : {"substrate_contact", "substrate_lubrication", "stokes_drag",
-                             "gravity_buoyancy", "capillary_front"})
+    for (const char* name : {"substrate_contact", "plate_contact", "substrate_lubrication",
+                             "stokes_drag", "gravity_buoyancy", "capillary_front"})
         EXPECT_NE(layout.find(name), std::string::npos) << name;
 }
 
@@ -215,7 +238,7 @@ TEST(BodyLawConformance, ANewLawIsItsHeaderAndOneListEntry) {
     Laws::params<StokesDragLaw>(p) = {0.18, true};
     Laws::params<TetherLaw>(p) = {50.0, 10e-6, 1e-7};
     const Particle q{"CB", 0.75e-6, 2.1e-15, 1187.5};
-    walk<Laws>(p, q, 40e-6, {5e-6, 10e-6, 20e-6});
+    walk<Laws>(p, q, {40e-6}, {5e-6, 10e-6, 20e-6});
     // The list sums both, and reports both resistances.
     Laws::State s{};
     BodyResistance r{};

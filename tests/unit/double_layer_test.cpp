@@ -15,8 +15,8 @@ using namespace drydem;
 
 static_assert(PairLaw<DoubleLayerLaw> && PairLaw<HertzMindlinLaw> && PairLaw<VanDerWaalsLaw> &&
               PairLaw<LubricationLaw>);
-// Laws that keep nothing take no space beside the contact's spring in every list slot.
-static_assert(sizeof(PairState) == sizeof(Vec3));
+// Laws that keep nothing take no space beside the contact's history in every list slot.
+static_assert(sizeof(PairState) == sizeof(ContactHistory));
 
 namespace {
 constexpr double kR = 0.75e-6, kRho = 1187.5;

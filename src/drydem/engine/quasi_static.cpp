@@ -90,8 +90,7 @@ void Simulation::assemble_quasi_static() {
         pairs.clear();
         for (std::size_t i = rows.lo(t); i < rows.lo(t + 1); ++i) {
             const BodyParams& bp = ff_.body_params(p.species[i]);
-            const BodyGeometry at_rest{p.position[i], {}, {}, p.radius[i], p.mass[i], p.density[i],
-                                       liquid_level_, 0.0};
+            const BodyGeometry at_rest = body_geometry(i, {}, {}, 0.0);
             BodyState kept = body_state_[i]; // at rest and Δt = 0: the state does not advance
             const BodyForce bf = BodyLaws::force(at_rest, bp, kept, 0.0);
             add_part(f, i, 0, bf.force);
@@ -291,8 +290,7 @@ void Simulation::step_quasi_static() {
                                   nl_.state(e.slot), dt);
         }
         for (std::size_t i = rows.lo(t); i < rows.lo(t + 1); ++i) {
-            const BodyGeometry g{p.position[i], part(qs_.u, i, 0), part(qs_.u, i, 1), p.radius[i],
-                                 p.mass[i],     p.density[i],      liquid_level_,     0.0};
+            const BodyGeometry g = body_geometry(i, part(qs_.u, i, 0), part(qs_.u, i, 1), 0.0);
             (void)BodyLaws::force(g, ff_.body_params(p.species[i]), body_state_[i], dt);
         }
     }

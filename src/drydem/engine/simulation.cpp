@@ -343,8 +343,7 @@ void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& 
         body_resistance_[i] = BodyResistance{};
         resistance = &body_resistance_[i];
     }
-    const BodyGeometry g{p.position[i], p.velocity[i], p.omega[i],    p.radius[i],
-                         p.mass[i],     p.density[i],  liquid_level_, 0.0};
+    const BodyGeometry g = body_geometry(i, p.velocity[i], p.omega[i], 0.0);
     const BodyForce b =
         BodyLaws::force(g, ff_.body_params(p.species[i]), body_state_[i], settings_.dt, resistance);
     p.force[i] = b.force;

@@ -94,6 +94,27 @@ public:
     }
     void set_liquid_level(double z) { liquid_level_ = z; }
     [[nodiscard]] double liquid_level() const { return liquid_level_; }
+    /// The calendering plate's height z_p [m] (PlateContactLaw; +inf: no plate), set between steps.
+    void set_plate_height(double z) { plate_height_ = z; }
+    [[nodiscard]] double plate_height() const { return plate_height_; }
+    /// The sum over the particles of what body law L applies at the present state (its history
+    /// not advanced): e.g. the plate's load on the film is -plate_total().force.
+    template <class L>
+    [[nodiscard]] BodyForce body_law_total() const {
+        BodyForce sum{};
+        for (std::size_t i = 0; i < p_.size(); ++i) {
+            auto kept = BodyLaws::state<L>(body_state_[i]);
+            L::add_force(body_geometry(i, p_.velocity[i], p_.omega[i], 0.0),
+                         law<L>(ff_.body_params(p_.species[i])), kept, 0.0, sum, nullptr);
+        }
+        return sum;
+    }
+    /// What the body laws see of particle i at velocities v, omega (reach: see BodyGeometry).
+    [[nodiscard]] BodyGeometry body_geometry(std::size_t i, const Vec3& v, const Vec3& omega,
+                                             double reach) const {
+        return {p_.position[i], v,     omega,        p_.radius[i], p_.mass[i], p_.density[i],
+                liquid_level_,  reach, plate_height_};
+    }
 
     [[nodiscard]] const ParticleStore& particles() const { return p_; }
     /// What the body laws keep per particle (storage order): `BodyLaws::state<L>(s[i])`.
@@ -182,6 +203,7 @@ private:
     std::int64_t step_ = 0;
     double time_ = 0.0;
     double liquid_level_;
+    double plate_height_ = INFINITY;
     std::function<double(double)> level_at_;
     bool force_rebuild_ = true;
     bool non_finite_ = false;

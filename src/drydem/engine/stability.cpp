@@ -53,6 +53,7 @@ struct GuardInputs {
     const Box& box;
     const ForceField& ff;
     double liquid_level;
+    double plate; ///< the calendering plate's height (+inf: none)
     bool semi;
     std::size_t threads;
     [[nodiscard]] RowSplit rows() const { return {p.size(), threads}; }
@@ -85,8 +86,8 @@ GuardOperators assemble_operators(const GuardInputs& in) {
             // next rebuild (within the skin); the semi-implicit kick's self-block at the present
             // state, as the kick sees it.
             const BodyParams& bp = in.ff.body_params(si);
-            const BodyGeometry within{p.position[i],   {},  {}, r, p.mass[i], p.density[i],
-                                      in.liquid_level, skin};
+            const BodyGeometry within{p.position[i],   {},   {},      r, p.mass[i], p.density[i],
+                                      in.liquid_level, skin, in.plate};
             const BodyResistance spring = BodyLaws::stiffness(within, bp);
             if (!semi) {
                 damping_t.bodies.push_back({std::uint32_t(i), BodyLaws::resistance(within, bp)});
@@ -209,7 +210,8 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
     StabilityEstimate out;
     if (p_.size() == 0 || nl_.owners() != p_.size()) return out;
     const bool semi = semi_implicit();
-    const GuardInputs in{p_, nl_, box_, ff_, liquid_level_, semi, std::size_t(threads_)};
+    const GuardInputs in{
+        p_, nl_, box_, ff_, liquid_level_, plate_height_, semi, std::size_t(threads_)};
     const GuardOperators op = assemble_operators(in);
     const std::uint64_t step = std::uint64_t(step_);
     if (!semi)

@@ -31,6 +31,7 @@
 #include "drydem/forces/law_list.hpp"
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/resistance.hpp"
+#include <cmath>
 #include <concepts>
 #include <string_view>
 #include <tuple>
@@ -48,6 +49,7 @@ struct BodyGeometry {
     double density = 0.0;      ///< particle density [kg/m³]
     double liquid_level = 0.0; ///< z_L [m]
     double reach = 0.0;        ///< how far the particle may move before it is looked at again [m]
+    double plate = INFINITY;   ///< height of the calendering plate z_p [m] (+inf: none)
 };
 
 template <class L>

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The registration of the force models: the pair laws (pair_law.hpp) and the body laws
 // (body_law.hpp) as two compile-time lists, summed in the order of M-9.5 (pair: contact, van der
-// Waals, lubrication, then the double layer, which the paper leaves out; body: substrate contact
-// and lubrication, Stokes drag, weight minus buoyancy, capillary force of the liquid level).
+// Waals, lubrication, then the double layer, which the paper leaves out; body: substrate contact,
+// the calendering plate's contact, substrate lubrication, Stokes drag, weight minus buoyancy,
+// capillary force of the liquid level).
 // Adding a law = one header in forces/ with its struct, one entry in its list below, and its
 // parameters from the configuration in drying/law_parameters.cpp (ARCHITECTURE.md "Adding a
 // pair law", "Adding a body law").
@@ -15,6 +16,7 @@
 #include "drydem/forces/lubrication.hpp"
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/pair_law.hpp"
+#include "drydem/forces/plate_contact.hpp"
 #include "drydem/forces/stokes_drag.hpp"
 #include "drydem/forces/substrate_contact.hpp"
 #include "drydem/forces/substrate_lubrication.hpp"
@@ -28,8 +30,8 @@ namespace drydem {
 using PairLaws = PairLawList<HertzMindlinLaw, VanDerWaalsLaw, LubricationLaw, DoubleLayerLaw>;
 
 /// The body laws, in the order their forces are summed.
-using BodyLaws = BodyLawList<SubstrateContactLaw, SubstrateLubricationLaw, StokesDragLaw,
-                             GravityBuoyancyLaw, CapillaryFrontLaw>;
+using BodyLaws = BodyLawList<SubstrateContactLaw, PlateContactLaw, SubstrateLubricationLaw,
+                             StokesDragLaw, GravityBuoyancyLaw, CapillaryFrontLaw>;
 
 /// Pre-mixed parameters of one species pair (all values as simulated, i.e. scaled), one entry
 /// per law: `law<VanDerWaalsLaw>(pp)`.

@@ -5,8 +5,11 @@
 //   γ_n = 2 sqrt(5/6) β sqrt(S_n m*),  γ_t = 2 sqrt(5/6) β sqrt(S_t m*),  β = -ln e / sqrt(ln²e + π²)
 //   F_n,i = -[(4/3) E* sqrt(R*) δ^{3/2} + γ_n v_n] n            (M-2.2, not clipped)
 //   F_t = -S_t ξ - γ_t v_t, |F_t| ≤ μ_s |F_n|                  (M-2.3)
+// With a limiting contact pressure p_y > 0 the elastic normal force is Thornton-Ning's
+// elastic-plastic one instead (thornton_ning.hpp, M-2.8), for compaction.
 #pragma once
 #include "drydem/forces/pair_geometry.hpp"
+#include "drydem/forces/thornton_ning.hpp"
 #include "drydem/forces/resistance.hpp"
 #include "drydem/forces/law_limits.hpp"
 #include <array>
@@ -23,6 +26,7 @@ struct HertzMindlinParams {
     double beta = 0.0;             ///< damping ratio from restitution, ≥ 0 (M-2.1)
     double friction = 0.8;         ///< sliding friction μ_s
     double rolling_friction = 0.0; ///< μ_r (C-7: off by default)
+    double yield_pressure = 0.0; ///< Thornton-Ning limiting contact pressure p_y [Pa]; 0 = elastic
     /// Derived: 2 sqrt(5/6) β sqrt(2 E*) and 2 sqrt(5/6) β sqrt(8 G*), so that
     /// γ_n = damping_n (R* δ)^{1/4} sqrt(m*) and γ_t = damping_t (R* δ)^{1/4} sqrt(m*) (M-2.1)
     /// cost one square root per contact. Set by mix_hertz_mindlin.
@@ -87,6 +91,16 @@ inline HertzMindlinCoefficients hertz_mindlin_coefficients(double r_eff, double 
 inline double hertz_elastic_force(const HertzMindlinCoefficients& co, double overlap) {
     return (2.0 / 3.0) * co.s_n * overlap;
 }
+/// The conservative normal force and its slope given the deepest overlap the contact reached:
+/// Hertz, or Thornton-Ning's elastic-plastic force when p_y > 0 (M-2.8).
+inline ElasticPlasticNormal contact_normal(const HertzMindlinCoefficients& co, double r_eff,
+                                           double overlap, const HertzMindlinParams& p,
+                                           double max_overlap) {
+    if (p.yield_pressure > 0.0)
+        return thornton_ning_normal(p.e_star, r_eff, p.yield_pressure, overlap,
+                                    std::max(max_overlap, overlap));
+    return {hertz_elastic_force(co, overlap), co.s_n};
+}
 
 /// Contact state of the shared law below: overlap δ > 0, lever arms from the centres to the
 /// contact point, R*, m*, normal n (from i toward the partner) and the kinematics.
@@ -109,24 +123,39 @@ struct ContactForce {
     double damping_n, damping_t;
 };
 
+/// What a contact keeps: the tangential spring ξ and, with plasticity, the deepest overlap
+/// δ_max (both erased when the contact opens, M-2.3, M-2.8).
+struct ContactHistory {
+    Vec3 spring;            ///< ξ [m]
+    double max_overlap = 0; ///< δ_max [m]; 0 while p_y = 0
+    [[nodiscard]] bool kept() const {
+        return spring.x != 0.0 || spring.y != 0.0 || spring.z != 0.0 || max_overlap != 0.0;
+    }
+};
+
 /// Whether a contact at this overlap slides: its spring ξ sits at the Coulomb limit
 /// S_t |ξ| = μ F_n (as the law leaves it after a cut; F_n elastic, at rest), to rounding.
-inline bool hertz_mindlin_sliding(const HertzMindlinCoefficients& co, double overlap,
-                                  const HertzMindlinParams& p, const Vec3& xi) {
-    const double f_coulomb = p.friction * hertz_elastic_force(co, overlap);
-    return co.s_t * norm(xi) >= (1.0 - 1e-6) * f_coulomb && norm2(xi) > 0.0;
+inline bool hertz_mindlin_sliding(const HertzMindlinCoefficients& co, double r_eff, double overlap,
+                                  const HertzMindlinParams& p, const ContactHistory& h) {
+    const double f_coulomb =
+        p.friction * contact_normal(co, r_eff, overlap, p, h.max_overlap).force;
+    return co.s_t * norm(h.spring) >= (1.0 - 1e-6) * f_coulomb && norm2(h.spring) > 0.0;
 }
 
-/// The quasi-static step's stiffness of a contact (pair form): S_n, and S_t while it sticks; a
-/// sliding contact resists no further tangential motion (its force stays μ F_n).
-inline PairResistance hertz_mindlin_tangent(const HertzMindlinCoefficients& co, double overlap,
-                                            const HertzMindlinParams& p, const Vec3& xi) {
-    return {co.s_n, hertz_mindlin_sliding(co, overlap, p, xi) ? 0.0 : co.s_t, 0.0, 0.0, 0.0, 0.0};
+/// The quasi-static step's stiffness of a contact (pair form): dF_n/dδ, and S_t while it sticks;
+/// a sliding contact resists no further tangential motion (its force stays μ F_n).
+inline PairResistance hertz_mindlin_tangent(const HertzMindlinCoefficients& co, double r_eff,
+                                            double overlap, const HertzMindlinParams& p,
+                                            const ContactHistory& h) {
+    const double s_n = contact_normal(co, r_eff, overlap, p, h.max_overlap).stiffness;
+    return {s_n, hertz_mindlin_sliding(co, r_eff, overlap, p, h) ? 0.0 : co.s_t, 0.0, 0.0, 0.0,
+            0.0};
 }
 
-/// Evaluates the Hertz-Mindlin law and advances the tangential history `xi` by one step dt.
+/// Evaluates the Hertz-Mindlin law and advances the contact's history h by one step dt.
 inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const HertzMindlinParams& p,
-                                          Vec3& xi, double dt) {
+                                          ContactHistory& h, double dt) {
+    Vec3& xi = h.spring;
     const Vec3& n = k.n;
     const HertzMindlinCoefficients co = hertz_mindlin_coefficients(k.r_eff, k.overlap, k.m_eff, p);
     const double s_t = co.s_t;
@@ -134,8 +163,16 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
     const double gamma_t = co.gamma_t; // 2 sqrt(5/6) β sqrt(S_t m*)
 
     const double v_n = dot(k.v_rel, n);
-    // M-2.2: elastic (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ, plus viscous damping; not clipped.
-    const double fn_mag = hertz_elastic_force(co, k.overlap) + gamma_n * v_n;
+    // M-2.2: elastic (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ (or M-2.8 with yield), plus viscous
+    // damping; not clipped.
+    double f_elastic;
+    if (p.yield_pressure > 0.0) {
+        h.max_overlap = std::max(h.max_overlap, k.overlap);
+        f_elastic = contact_normal(co, k.r_eff, k.overlap, p, h.max_overlap).force;
+    } else {
+        f_elastic = hertz_elastic_force(co, k.overlap);
+    }
+    const double fn_mag = f_elastic + gamma_n * v_n;
     ContactForce out;
     out.normal_force = std::abs(fn_mag);
     out.damping_n = gamma_n;
@@ -186,13 +223,14 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
 
 /// Particle-particle contact (δ = -h > 0), lever arms c = r - δ/2. `damping` receives the
 /// viscous part as a resistance (resistance.hpp pair form).
-inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& p, Vec3& xi,
-                               double dt, PairResistance* damping = nullptr) {
+inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& p,
+                               ContactHistory& history, double dt,
+                               PairResistance* damping = nullptr) {
     const double overlap = -g.gap;
     const ContactKinematics k{
         g.n,     overlap,   g.r_eff,  g.m_eff, g.r_i - 0.5 * overlap, g.r_j - 0.5 * overlap,
         g.v_rel, g.omega_i, g.omega_j};
-    const ContactForce c = hertz_mindlin_contact(k, p, xi, dt);
+    const ContactForce c = hertz_mindlin_contact(k, p, history, dt);
     if (damping) {
         damping->normal += c.damping_n;
         damping->sliding += c.damping_t;
@@ -200,13 +238,20 @@ inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& 
     return {c.force_i, c.torque_i, c.torque_j};
 }
 
-/// The contact as a pair law (pair_law.hpp). Its state is the tangential spring ξ, erased when
-/// the contact opens (M-2.3).
+/// The same for a contact whose only history is the spring ξ (no plasticity kept).
+inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& p, Vec3& xi,
+                               double dt, PairResistance* damping = nullptr) {
+    ContactHistory h{xi};
+    const PairForce f = hertz_mindlin(g, p, h, dt, damping);
+    xi = h.spring;
+    return f;
+}
+
+/// The contact as a pair law (pair_law.hpp). Its state is the contact's history (the tangential
+/// spring ξ, and δ_max with plasticity), erased when the contact opens (M-2.3).
 struct HertzMindlinLaw {
     using Params = HertzMindlinParams;
-    struct State {
-        Vec3 spring; ///< ξ [m]
-    };
+    using State = ContactHistory;
     static constexpr std::string_view name = "hertz_mindlin";
     static constexpr std::array limits{
         ParamLimit<Params>{"e_star", &Params::e_star},
@@ -214,6 +259,7 @@ struct HertzMindlinLaw {
         ParamLimit<Params>{"beta", &Params::beta},
         ParamLimit<Params>{"friction", &Params::friction},
         ParamLimit<Params>{"rolling_friction", &Params::rolling_friction},
+        ParamLimit<Params>{"yield_pressure", &Params::yield_pressure},
         ParamLimit<Params>{"damping_n", &Params::damping_n},
         ParamLimit<Params>{"damping_t", &Params::damping_t}};
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
@@ -221,9 +267,9 @@ struct HertzMindlinLaw {
                                                         State& s, double dt, PairForce& f,
                                                         PairResistance* damping) {
         if (g.gap < 0.0)
-            f += hertz_mindlin(g, p, s.spring, dt, damping);
+            f += hertz_mindlin(g, p, s, dt, damping);
         else
-            s.spring = Vec3{};
+            s = State{};
     }
     /// γ_n and γ_t (the sticking contact's, an upper bound of the damping it applies).
     static PairResistance resistance(const PairGeometry& g, const Params& p) {
@@ -244,20 +290,18 @@ struct HertzMindlinLaw {
     static PairResistance resistance(const PairGeometry& g, const Params& p, const State& s) {
         if (g.gap >= 0.0) return {};
         const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, p);
-        const bool slides = hertz_mindlin_sliding(co, -g.gap, p, s.spring);
+        const bool slides = hertz_mindlin_sliding(co, g.r_eff, -g.gap, p, s);
         return {co.gamma_n, slides ? 0.0 : co.gamma_t, 0.0, 0.0, 0.0, 0.0};
     }
     /// The quasi-static step's stiffness: S_n, and S_t unless the contact slides.
     static PairResistance tangent(const PairGeometry& g, const Params& p, const State& s) {
         if (g.gap >= 0.0) return {};
         const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, p);
-        return hertz_mindlin_tangent(co, -g.gap, p, s.spring);
+        return hertz_mindlin_tangent(co, g.r_eff, -g.gap, p, s);
     }
-    /// Any component non-zero (three compares: most list slots are pairs out of reach, where the
+    /// Any component non-zero (four compares: most list slots are pairs out of reach, where the
     /// pair loop asks this every step).
-    static bool keeps(const State& s) {
-        return s.spring.x != 0.0 || s.spring.y != 0.0 || s.spring.z != 0.0;
-    }
+    static bool keeps(const State& s) { return s.kept(); }
 };
 
 } // namespace drydem
