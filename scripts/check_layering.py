@@ -26,6 +26,7 @@ LAYERS = [
     ["analysis"],                      # structure analysis of a particle set
     ["output"],                        # writers of results: frames, series, dump, analysis, checkpoint
     ["drying"],                        # the drying run: set-up, scaling, driver, its outputs
+    ["calendering"],                   # the calendering run on a dried film
     ["study"],                         # loadings x seeds as separate runs
     ["app"],                           # the `drydem` command line
 ]

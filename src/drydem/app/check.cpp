@@ -86,6 +86,41 @@ void print_quasi_static_step(const Config& c, const ScaledParameters& s) {
                100 * q.approach_floor, q.tolerance, q.max_iterations);
 }
 
+namespace {
+
+/// What `drydem calender` will use with this config (docs/calendering.md): the NCM contacts'
+/// limiting pressure and yield overlap per partner, the CB spheres' and the plate's moduli.
+void print_calendering(const Config& c, const FilmRecipe& r) {
+    const ForceField ff = make_calendering_force_field(c, r);
+    const int ncm = 0, cb = r.cb_species();
+    const double r_ncm = 0.5 * r.species[ncm].diameter,
+                 r_cb = 0.5 * r.species[std::size_t(cb)].diameter;
+    fmt::print("\nCalendering (drydem calender; docs/calendering.md, model.md M-2.8, M-2.9)\n");
+    fmt::print(
+        "  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode, c.calender_plate_speed,
+        c.calender_mode == "pressure" ? fmt::format("{:.4g} MPa", c.calender_target_pressure * 1e-6)
+                                      : fmt::format("porosity {:.3g}", c.calender_target_porosity));
+    auto yield = [](const char* what, const HertzMindlinParams& p, double r_eff) {
+        if (p.yield_pressure <= 0.0) return fmt::print("  {:<22} elastic\n", what);
+        fmt::print(
+            "  {:<22} p_y {:.3g} GPa, yields at {:.3g} nm (F_y {:.3g} mN)\n", what,
+            p.yield_pressure * 1e-9, yield_overlap(p.e_star, r_eff, p.yield_pressure) * 1e9,
+            hertz_normal(p.e_star, r_eff, yield_overlap(p.e_star, r_eff, p.yield_pressure)).force *
+                1e3);
+    };
+    yield("NCM-NCM", law<HertzMindlinLaw>(ff.pair_params(ncm, ncm)), 0.5 * r_ncm);
+    yield("NCM-plate", law<PlateContactLaw>(ff.body_params(ncm)), r_ncm);
+    yield("NCM-substrate", law<SubstrateContactLaw>(ff.body_params(ncm)), r_ncm);
+    yield("NCM-CB", law<HertzMindlinLaw>(ff.pair_params(ncm, cb)), r_ncm * r_cb / (r_ncm + r_cb));
+    fmt::print(
+        "  CB spheres E = {:.3g} GPa, plate E = {:.3g} GPa\n",
+        (c.calender_cb_youngs_modulus > 0 ? c.calender_cb_youngs_modulus : c.cb_youngs_modulus) *
+            1e-9,
+        c.plate_youngs_modulus * 1e-9);
+}
+
+} // namespace
+
 void print_check(const Config& c) {
     const FilmRecipe r = make_recipe(c);
     const ScaledParameters s = scale_parameters(c);
@@ -150,6 +185,7 @@ void print_check(const Config& c) {
     print_guard_clusters(c, r);
     fmt::print("\n");
     print_groups(dimensionless_groups(c));
+    print_calendering(c, r);
 
     // Cost estimate (M-8.3), from the derived-quantity checks' own estimate.
     const DerivedQuantities d = derived_quantities(c);

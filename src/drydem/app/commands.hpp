@@ -5,6 +5,7 @@
 #include "drydem/io/config.hpp"
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,16 @@ void print_table2_comparison(const Config& c);
 /// `drydem run --couple-dryer`: the dryer <-> DEM iteration (dryer.md D-6); each DEM run in
 /// DIR/iter_N, the iterations in DIR/coupling.json. Returns 0 when converged, 1 otherwise.
 int run_coupled(const Config& c, const RunOptions& o);
+
+/// `drydem calender RUN_DIR`: the calendering of a finished drying run (docs/calendering.md).
+struct CalenderCommand {
+    std::filesystem::path run_dir, output_dir; ///< output_dir empty: RUN_DIR-calendered
+    std::vector<std::string> sets;             ///< --set over the run's config.toml
+    int threads = 0;                           ///< 0: run.threads of the config
+    bool overwrite = false, quiet = false, plots = true;
+    std::optional<std::int64_t> stop_after;
+};
+int run_calender(const CalenderCommand& o);
 
 /// `drydem analyze SNAPSHOT`: structure analysis into analysis.json, profiles.csv, psd_*.csv, plots,
 /// and on request the voxel image (structure.raw/.json/.mhd, structure.tif).

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `drydem` command line (README "Command line"): run, check, dryer, analyze, study, pool, calibrate, config, bench. Exit codes: 0 success,
+// `drydem` command line (README "Command line"): run, calender, check, dryer, analyze, study,
+// pool, calibrate, config, bench. Exit codes: 0 success,
 // 1 run failure, 2 bad input.
 #include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/app/commands.hpp"
@@ -74,11 +75,15 @@ struct CommandLine {
     std::string an_voxel, an_dz, an_gap, an_config, an_pore_top;
     bool an_no_voxels = false;
     app::BenchOptions bench_opt;
+    app::CalenderCommand calender_opt;
+    std::string calender_stop_text;
+    CLI::Option* calender_stop_opt = nullptr;
     PoolOptions pool_opt;
     std::string pool_tasks;
     CLI::App* pool = nullptr;
     CLI::App *run = nullptr, *dryer = nullptr, *check = nullptr, *config = nullptr,
-             *study = nullptr, *calibrate = nullptr, *analyze = nullptr, *bench = nullptr;
+             *study = nullptr, *calibrate = nullptr, *analyze = nullptr, *bench = nullptr,
+             *calender = nullptr;
     CLI::Option *seed_opt = nullptr, *threads_opt = nullptr, *stop_after_opt = nullptr;
     std::optional<std::uint64_t> seed, threads;
     std::optional<std::int64_t> stop_after;
@@ -148,6 +153,30 @@ void declare_dryer_check_config(CommandLine& a) {
                      "key reference (docs/configuration.md)")
         ->required()
         ->check(CLI::IsMember({"default", "doc"}));
+}
+
+void declare_calender(CommandLine& a) {
+    app::CalenderCommand& o = a.calender_opt;
+    a.calender = a.cli.add_subcommand(
+        "calender", "press the dried film of a finished run with a rigid plate, unload it, and "
+                    "analyse the calendered film (docs/calendering.md)");
+    a.calender->add_option("run_dir", o.run_dir, "the drying run's folder (its final.csv)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    a.calender->add_option("-o,--output", o.output_dir,
+                           "output folder (default: RUN_DIR-calendered beside the run)");
+    a.calender
+        ->add_option("--set", o.sets,
+                     "override a key of the run's config, e.g. "
+                     "calendering.target_porosity=0.35")
+        ->take_all();
+    a.calender->add_option("--threads", o.threads, "OpenMP threads (default run.threads)");
+    a.calender_stop_opt = a.calender->add_option("--stop-after-steps", a.calender_stop_text,
+                                                 "stop after this step (testing)");
+    a.calender->add_flag("--quiet", o.quiet, "only warnings and the result lines");
+    a.calender->add_flag("--no-plots", a.no_plots, "skip the matplotlib plots");
+    a.calender->add_flag("--overwrite", o.overwrite,
+                         "replace a previous calendering run in the output folder");
 }
 
 void declare_study_calibrate(CommandLine& a) {
@@ -303,8 +332,12 @@ void check_integers(CommandLine& a) {
         a.stop_after = std::int64_t(cli_integer("--stop-after-steps", a.stop_after_text,
                                                 std::numeric_limits<std::int64_t>::max(),
                                                 "a step count 0..9223372036854775807"));
+    if (a.calender_stop_opt && a.calender_stop_opt->count() > 0)
+        a.calender_opt.stop_after = std::int64_t(cli_integer(
+            "--stop-after-steps", a.calender_stop_text, std::numeric_limits<std::int64_t>::max(),
+            "a step count 0..9223372036854775807"));
     for (const int n : {a.study_opt.threads, a.an.threads, a.bench_opt.threads, a.cal_opt.threads,
-                        a.pool_opt.threads})
+                        a.pool_opt.threads, a.calender_opt.threads})
         check_threads("--threads", n);
     if (!a.scheduler.empty()) a.sets.push_back("scheduler.type=\"" + a.scheduler + "\"");
     if (a.seed && a.resume_dir.empty()) a.sets.push_back(fmt::format("run.seed={}", *a.seed));
@@ -460,6 +493,7 @@ int main(int argc, char** argv) {
     declare_dryer_check_config(a);
     declare_study_calibrate(a);
     declare_analyze_bench(a);
+    declare_calender(a);
     try {
         a.cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -477,6 +511,12 @@ int main(int argc, char** argv) {
         }
         if (*a.bench) return app::run_bench(a.bench_opt);
         if (*a.analyze) return analyze_command(a);
+        if (*a.calender) {
+            a.calender_opt.plots = !a.no_plots;
+            std::signal(SIGINT, [](int sig) { request_stop(sig); });
+            std::signal(SIGTERM, [](int sig) { request_stop(sig); });
+            return app::run_calender(a.calender_opt);
+        }
         if (*a.check) return check_command(a);
         if (*a.calibrate) return calibrate_command(a);
         if (*a.study) return study_command(a);

@@ -19,6 +19,16 @@ analysis::FileDefaults file_defaults(const Config& c) {
     return {analysis_formulation(c), c.box_x, c.box_y, int(c.ncm_diameters.size())};
 }
 
+analysis::AnalysisOptions end_of_run_analysis_options(const Config& c) {
+    analysis::AnalysisOptions ao;
+    ao.voxel = c.analysis_voxel_size;
+    ao.profile_dz = c.analysis_profile_dz;
+    ao.contact_gap = c.analysis_contact_gap;
+    ao.pore_top = c.analysis_pore_top;
+    set_transport_options(ao, c);
+    return ao;
+}
+
 void set_transport_options(analysis::AnalysisOptions& o, const Config& c) {
     o.transport.voxels = c.analysis_transport_voxel_sizes;
     o.transport.max_voxels = c.analysis_transport_max_voxels;

@@ -16,6 +16,10 @@ namespace drydem {
 /// What a particle file may leave out: formulation, box (film.box_x, film.box_y), NCM classes.
 [[nodiscard]] analysis::FileDefaults file_defaults(const Config& c);
 
+/// The options of the end-of-run analysis of a run's final.csv ([analysis] keys: voxel, profile
+/// slab, contact gap, pore top, transport and surfaces), for the drying and the calendering run.
+[[nodiscard]] analysis::AnalysisOptions end_of_run_analysis_options(const Config& c);
+
 /// The transport and surface options of a config (analysis.transport_voxel_sizes, *_conductivity,
 /// surface_points, cb_coverage_gap, binder_diffusivity) into `o`.
 void set_transport_options(analysis::AnalysisOptions& o, const Config& c);

@@ -9,10 +9,7 @@
 #include <cmath>
 
 namespace drydem {
-namespace {
 
-/// Particles from a file: species by type (type = species + 1), density from the recipe where the
-/// file has none.
 ParticleStore particles_from_file(const std::filesystem::path& file, const FilmRecipe& recipe,
                                   const Box& box) {
     const ParticleFile in = read_particles(file);
@@ -42,8 +39,6 @@ ParticleStore particles_from_file(const std::filesystem::path& file, const FilmR
     }
     return p;
 }
-
-} // namespace
 
 Film describe_film(const Config& c) {
     Film f{make_recipe(c), scale_parameters(c), Box{c.box_x, c.box_y}, {}};

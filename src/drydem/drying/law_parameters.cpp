@@ -79,6 +79,9 @@ HertzMindlinParams params(For<SubstrateContactLaw>, const LawInputs& in, const S
                              c.rolling_friction);
 }
 
+/// No plate while the film dries: the calendering run (calendering/) sets its own.
+HertzMindlinParams params(For<PlateContactLaw>, const LawInputs&, const SizeClass&) { return {}; }
+
 /// lubrication.substrate and lubrication.kappa_c (M-4.4), the lubrication viscosity.
 SubstrateLubricationParams params(For<SubstrateLubricationLaw>, const LawInputs& in,
                                   const SizeClass&) {
@@ -137,6 +140,48 @@ ForceField make_drying_force_field(const Config& config, const FilmRecipe& recip
             "the laws' parameters as simulated are out of range ({}): {}. Check the keys of the "
             "law's section and the [scaling] factors that multiply them",
             bad.size(), fmt::join(bad, "; ")));
+    return ff;
+}
+
+double ncm_yield_pressure(const Config& c, double e_star) {
+    if (c.calender_yield_pressure > 0.0) return c.calender_yield_pressure;
+    // δ_y = y 2R* in yield_pressure_at(E*, R*, δ_y) = (2E*/π) sqrt(δ_y/R*): R* cancels.
+    return yield_pressure_at(e_star, 1.0, 2.0 * c.calender_yield_displacement);
+}
+
+ForceField make_calendering_force_field(const Config& config, const FilmRecipe& recipe) {
+    Config c = config; // physical: the drying run's scaling is not the calendering's
+    c.scaling_scheme = "paper";
+    c.time_factor = c.viscosity_reduction = c.stiffness_factor = 1.0;
+    c.capillary_factor = c.hamaker_factor = 1.0;
+    c.lubrication = c.substrate_lubrication = c.double_layer = false;
+    if (!c.calender_van_der_waals) c.hamaker_cb_cb = c.hamaker_ncm_cb = c.hamaker_ncm_ncm = 0.0;
+    if (c.calender_cb_youngs_modulus > 0.0) c.cb_youngs_modulus = c.calender_cb_youngs_modulus;
+    ForceField ff = make_drying_force_field(c, recipe, scale_parameters(c));
+    ff.set_body_law<StokesDragLaw>({0.0, false});
+    ff.set_body_law<GravityBuoyancyLaw>({c.gravity, 0.0, 0.0});
+    ff.set_body_law<CapillaryFrontLaw>({0.0, c.contact_angle});
+    const int n = ff.species_count;
+    for (int i = 0; i < n; ++i) {
+        const SizeClass& a = recipe.species[std::size_t(i)];
+        HertzMindlinParams plate =
+            mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, c.plate_youngs_modulus,
+                              c.plate_poisson_ratio, c.restitution, c.friction, c.rolling_friction);
+        HertzMindlinParams& substrate = law<SubstrateContactLaw>(ff.body[std::size_t(i)]);
+        if (!a.is_cb) {
+            plate.yield_pressure = ncm_yield_pressure(c, plate.e_star);
+            substrate.yield_pressure = ncm_yield_pressure(c, substrate.e_star);
+        }
+        law<PlateContactLaw>(ff.body[std::size_t(i)]) = plate;
+        for (int j = 0; j < n; ++j) {
+            HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair[std::size_t(i * n + j)]);
+            if (!a.is_cb && !recipe.species[std::size_t(j)].is_cb)
+                hm.yield_pressure = ncm_yield_pressure(c, hm.e_star);
+        }
+    }
+    if (const auto bad = force_field_violations(ff); !bad.empty())
+        throw InputError(fmt::format("the calendering laws' parameters are out of range: {}",
+                                     fmt::join(bad, "; ")));
     return ff;
 }
 

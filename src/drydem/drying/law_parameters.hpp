@@ -18,6 +18,19 @@ namespace drydem {
 ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
                                    const ScaledParameters& s);
 
+/// The dry film under the calendering plate (docs/calendering.md): the [materials], [contact] and
+/// [van_der_waals] keys as they are, physical (no time scaling; calendering.van_der_waals: off
+/// sets the Hamaker constants to 0), the CB spheres with calendering.cb_youngs_modulus; no liquid (no lubrication, drag, buoyancy, capillary force or
+/// double layer); physical gravity; the plate (calendering.plate_*); every contact of an NCM
+/// particle (with NCM, the substrate, the plate) elastic-plastic, Thornton-Ning with
+/// calendering.yield_pressure, or the p_y at which a pair yields at calendering.yield_displacement
+/// × 2R* (model.md M-2.8, M-2.9). CB contacts stay elastic.
+ForceField make_calendering_force_field(const Config& c, const FilmRecipe& recipe);
+
+/// The limiting contact pressure of an NCM contact of effective modulus E* (calendering.yield_*):
+/// the given p_y, or the one at which it yields at yield_displacement × 2R*; 0 = elastic.
+double ncm_yield_pressure(const Config& c, double e_star);
+
 /// The widest pair of the film's species: the largest centre distance r_i + r_j + the pair laws'
 /// range (interaction_range, as the neighbour list reaches) over every species pair [m], and the
 /// two diameters of that pair.

@@ -50,12 +50,7 @@ private:
     void analyse(json& summary) const {
         const Config& c = ctx_.config;
         const fs::path dir = ctx_.options.output_dir;
-        analysis::AnalysisOptions ao;
-        ao.voxel = c.analysis_voxel_size;
-        ao.profile_dz = c.analysis_profile_dz;
-        ao.contact_gap = c.analysis_contact_gap;
-        ao.pore_top = c.analysis_pore_top;
-        set_transport_options(ao, c);
+        analysis::AnalysisOptions ao = end_of_run_analysis_options(c);
         ao.timeseries = (dir / "timeseries.csv").string();
         ao.dump = (dir / "snapshots" / "dump.lammpstrj").string();
         ao.dump_defaults = file_defaults(c);

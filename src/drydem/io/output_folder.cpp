@@ -93,6 +93,16 @@ const OutputKind& analysis_output() {
     return k;
 }
 
+const OutputKind& calender_output() {
+    static const OutputKind k{"calendering run",
+                              {"config.toml", "log.txt", "summary.json", "compaction.csv",
+                               "final.csv", "snapshots", "analysis", "plots"},
+                              false,
+                              [](const fs::path& d) { return present(d / "compaction.csv"); },
+                              ""};
+    return k;
+}
+
 void prepare_output_folder(const fs::path& dir, const OutputKind& kind, bool overwrite) {
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))

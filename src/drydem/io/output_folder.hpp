@@ -20,11 +20,13 @@ struct OutputKind {
     std::string resume_hint;                                   ///< how to continue one, or empty
 };
 
-/// The kinds: `drydem run` (also --couple-dryer), `drydem study`, `drydem dryer`, `drydem analyze`.
+/// The kinds: `drydem run` (also --couple-dryer), `drydem study`, `drydem dryer`, `drydem analyze`,
+/// `drydem calender`.
 [[nodiscard]] const OutputKind& run_output();
 [[nodiscard]] const OutputKind& study_output();
 [[nodiscard]] const OutputKind& dryer_output();
 [[nodiscard]] const OutputKind& analysis_output();
+[[nodiscard]] const OutputKind& calender_output(); ///< `drydem calender`
 
 /// Makes `dir` ready for a new output of `kind`: creates it when missing; an empty folder is used
 /// as it is; a folder holding a previous output of this kind is refused (InputError naming

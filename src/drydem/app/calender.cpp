@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// `drydem calender RUN_DIR`: the run's config with the caller's overrides, the output folder
+// (never another output's), the calendering run, its plots and result lines.
+#include "drydem/app/commands.hpp"
+#include "drydem/calendering/calender_run.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/drying/derived_checks.hpp"
+#include "drydem/io/output_folder.hpp"
+#include <fmt/format.h>
+
+namespace drydem::app {
+
+namespace fs = std::filesystem;
+
+int run_calender(const CalenderCommand& cmd) {
+    fs::path run_dir = fs::path(cmd.run_dir).lexically_normal();
+    if (run_dir.filename().empty()) run_dir = run_dir.parent_path(); // "dir/" -> "dir"
+    const fs::path config = run_dir / "config.toml";
+    if (!fs::exists(config))
+        throw InputError(fmt::format("{}: no config.toml; give the folder of a drying run "
+                                     "(drydem run -o DIR)",
+                                     run_dir.string()));
+    Config c = load_config_file(config.string(), cmd.sets);
+    if (cmd.threads > 0) c.threads = cmd.threads;
+    CalenderOptions o;
+    o.run_dir = run_dir;
+    o.output_dir =
+        cmd.output_dir.empty() ? fs::path(run_dir.string() + "-calendered") : cmd.output_dir;
+    o.quiet = cmd.quiet;
+    o.plots = cmd.plots;
+    o.stop_after_steps = cmd.stop_after;
+    const OutputLock lock(o.output_dir);
+    prepare_output_folder(o.output_dir, calender_output(), cmd.overwrite);
+    const CalenderResult r = run_calendering(c, o);
+    if (o.plots) run_plot_script("plot_calender.py", o.output_dir);
+    fmt::print(
+        "dried {:.3f} um (porosity {:.4f}) -> peak {:.3f} MPa at {:.3f} um (porosity {:.4f}) "
+        "-> unloaded {:.3f} um (porosity {:.4f}, springback {:.2f} %)\n",
+        r.dried_thickness * 1e6, r.dried_porosity, r.peak_pressure * 1e-6, r.peak_thickness * 1e6,
+        r.peak_porosity, r.unloaded_thickness * 1e6, r.unloaded_porosity, 100.0 * r.springback);
+    fmt::print("{} in {} steps, {:.1f} s; written to {}\n", r.completed ? "completed" : "stopped",
+               r.steps, r.wall_time, o.output_dir.string());
+    if (!r.completed) fmt::print(stderr, "error: {}\n", r.error);
+    return r.completed ? 0 : 1;
+}
+
+} // namespace drydem::app

@@ -1,0 +1,422 @@
+// SPDX-License-Identifier: MIT
+// The calendering driver (docs/calendering.md), top to bottom:
+//   1. set-up: the film's recipe and box from the drying run's config, its final.csv.
+//   2. settle: in the dry state (elastic-plastic NCM contacts, no liquid), the film relaxes the
+//      overlaps the drying left, since the capillary force that made them is gone: FIRE
+//      (engine/fire.hpp) to a static state (calendering.settle_*). Then the plate comes down
+//      onto the highest particle.
+//   3. load: the plate moves down at calendering.plate_speed until the porosity below it is the
+//      target (displacement mode) or it carries the target pressure (pressure mode).
+//   4. hold: calendering.hold_time at the plate height (pressure mode: a servo on the pressure).
+//   5. unload: the plate moves up until it carries nothing and clears the film; it is removed.
+//   6. relax: calendering.relaxation without the plate, then the film is measured (springback).
+//   7. end: final.csv, summary.json with the fitted compaction curve, the structure analysis.
+// A row of compaction.csv every calendering.record_every of plate travel.
+#include "drydem/calendering/calender_run.hpp"
+#include "drydem/analysis/analyze.hpp"
+#include "drydem/calendering/compaction_fit.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/core/stop_request.hpp"
+#include "drydem/drying/analysis_inputs.hpp"
+#include "drydem/drying/film_measures.hpp"
+#include "drydem/drying/film_setup.hpp"
+#include "drydem/drying/law_parameters.hpp"
+#include "drydem/drying/run_observer.hpp"
+#include "drydem/drying/stability_guard.hpp"
+#include "drydem/engine/fire.hpp"
+#include "drydem/git_hash.hpp"
+#include "drydem/io/particle_io.hpp"
+#include "drydem/io/snapshot_writers.hpp"
+#include "drydem/output/analysis_writer.hpp"
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <spdlog/logger.h>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <unistd.h>
+
+namespace drydem {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+/// The phases in order; their number is compaction.csv's `phase` column.
+enum class Phase : int { settle = 0, load = 1, hold = 2, unload = 3, relax = 4, done = 5 };
+
+constexpr const char* phase_name(Phase p) {
+    constexpr const char* names[] = {"settle", "load", "hold", "unload", "relax", "done"};
+    return names[int(p)];
+}
+
+/// The largest step of the calendering run: calendering.time_step, or 1e-9 s.
+double largest_calender_step(const Config& c) {
+    return c.calender_time_step > 0.0 ? c.calender_time_step : 1e-9;
+}
+
+class CalenderRun {
+public:
+    CalenderRun(const Config& c, const CalenderOptions& o);
+    CalenderResult calender();
+
+private:
+    [[nodiscard]] ParticleStore dried_film();
+    [[nodiscard]] std::unique_ptr<Simulation> make_simulation(ParticleStore particles);
+    void start_pressing();
+    void step();
+    [[nodiscard]] double plate_velocity() const;
+    [[nodiscard]] bool phase_over() const;
+    void next_phase();
+    void record();
+    void write_frame();
+    [[nodiscard]] double plate_pressure() const {
+        return -sim_->body_law_total<PlateContactLaw>().force.z / film_.box.area();
+    }
+    [[nodiscard]] double porosity_at(double h) const {
+        return coating_density(film_.areal_mass, h, film_.recipe.solids_density).porosity;
+    }
+    /// Simulated time since the settling started [s].
+    [[nodiscard]] double now() const { return sim_->time(); }
+    [[nodiscard]] std::int64_t steps() const { return sim_->step_count(); }
+    /// The film's thickness: the 99th percentile of the particle tops, which a particle thrown
+    /// up by the unloading does not move (the highest top does, by micrometres).
+    [[nodiscard]] double film_top() const { return top_percentile(sim_->particles(), 0.99); }
+    [[nodiscard]] double highest_top() const { return top_percentile(sim_->particles(), 1.0); }
+    void finish();
+    [[nodiscard]] json summary() const;
+    void analyse(json& s) const;
+
+    const Config& c_;
+    const CalenderOptions& o_;
+    const Clock::time_point start_ = Clock::now();
+    StatusLine status_;
+    std::shared_ptr<spdlog::logger> log_;
+    Film film_;
+    std::unique_ptr<Simulation> sim_;
+    StabilityGuard guard_;
+    FireRelaxation fire_;
+    double settle_force_; ///< the settling's force tolerance [N]
+    bool settled_ = false;
+    double speed_;                      ///< calendering.plate_speed [m/s]
+    double ncm_diameter_, ncm_density_; ///< of the largest NCM (inertial number)
+    Phase phase_ = Phase::settle;
+    double phase_start_ = 0.0, last_record_ = -INFINITY, pressure_ = 0.0;
+    CsvSeriesWriter csv_;
+    std::ofstream dump_;
+    std::size_t rows_ = 0;
+    std::vector<double> load_pressure_, load_porosity_, load_inertial_;
+    CalenderResult r_;
+    double settled_thickness_ = 0.0, settled_overlap_ = 0.0, dried_overlap_ = 0.0;
+};
+
+CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
+    : c_(c), o_(o), status_(!o.quiet && isatty(STDERR_FILENO)),
+      log_(make_run_logger(o.output_dir, o.quiet, false, status_)), film_(describe_film(c)),
+      sim_(make_simulation(dried_film())),
+      guard_(GuardPolicy::adapt, largest_calender_step(c), *log_),
+      fire_(1.8 * largest_calender_step(c)),
+      settle_force_(c.calender_settle_tolerance * film_.box.area() /
+                    double(std::max<std::size_t>(sim_->particles().size(), 1))),
+      speed_(c.calender_plate_speed),
+      csv_(o.output_dir / "compaction.csv",
+           {"time_s", "phase", "plate_height_um", "pressure_MPa", "porosity", "film_top_um",
+            "contacts", "max_overlap_rel", "kinetic_energy_J", "dt_s", "inertial_number"}) {
+    ncm_diameter_ = ncm_density_ = 0.0;
+    for (const SizeClass& s : film_.recipe.species)
+        if (!s.is_cb && s.diameter > ncm_diameter_)
+            ncm_diameter_ = s.diameter, ncm_density_ = s.density;
+    std::ofstream(o.output_dir / "config.toml") << to_toml(c);
+    fs::create_directories(o.output_dir / "snapshots");
+    dump_.open(o.output_dir / "snapshots" / "dump.lammpstrj");
+}
+
+/// The dried film: final.csv of the run, at rest.
+ParticleStore CalenderRun::dried_film() {
+    const fs::path file = o_.run_dir / "final.csv";
+    if (!fs::exists(file))
+        throw InputError(fmt::format("{}: no final.csv; calender a drying run that has finished "
+                                     "(its folder holds final.csv)",
+                                     o_.run_dir.string()));
+    ParticleStore particles = particles_from_file(file, film_.recipe, film_.box);
+    count_species(film_, particles);
+    log_->info("DryDEM {} ({}) calendering {}: {} NCM + {} CB particles, box {:.4g} x {:.4g} um, "
+               "mode {}, plate speed {:.3g} m/s",
+               DRYDEM_VERSION, DRYDEM_GIT_HASH, file.string(), film_.n_ncm, film_.n_cb,
+               c_.box_x * 1e6, c_.box_y * 1e6, c_.calender_mode, c_.calender_plate_speed);
+    return particles;
+}
+
+/// The engine on the dried film at rest in the dry state (explicit; the plate not yet there).
+std::unique_ptr<Simulation> CalenderRun::make_simulation(ParticleStore particles) {
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        particles.velocity[i] = particles.omega[i] = Vec3{};
+    EngineSettings es;
+    es.integrator = Integrator::explicit_verlet;
+    es.dt = largest_calender_step(c_);
+    es.skin = c_.neighbor_skin();
+    es.threads = c_.threads;
+    es.sort_every = c_.sort_every;
+    es.overlap_limit = c_.overlap_limit;
+    return std::make_unique<Simulation>(std::move(particles), film_.box,
+                                        make_calendering_force_field(c_, film_.recipe), es);
+}
+
+/// The settled film at rest, the guard's step again, the plate on the highest particle.
+void CalenderRun::start_pressing() {
+    settled_thickness_ = film_top();
+    const double plate = highest_top();
+    settled_overlap_ = sim_->stats().max_overlap_rel;
+    settled_ = fire_.rms_force() <= settle_force_;
+    if (!settled_)
+        log_->warn("the film did not settle within calendering.settle_time = {:.3g} s (rms force "
+                   "{:.3g} N, tolerance {:.3g} N); pressing it as it is",
+                   c_.calender_settle_time, fire_.rms_force(), settle_force_);
+    ParticleStore& p = sim_->particles_mut();
+    for (std::size_t i = 0; i < p.size(); ++i) p.velocity[i] = p.omega[i] = Vec3{};
+    guard_.start(*sim_);
+    sim_->set_plate_height(plate);
+}
+
+/// The plate's velocity in the present phase (+z up) [m/s]; the pressure servo of the hold.
+double CalenderRun::plate_velocity() const {
+    switch (phase_) {
+    case Phase::load:
+        return -speed_;
+    case Phase::hold:
+        if (c_.calender_mode != "pressure") return 0.0;
+        // Proportional servo: full speed at a 20 % pressure error, down when below the target.
+        return -speed_ * std::clamp(5.0 * (c_.calender_target_pressure - pressure_) /
+                                        c_.calender_target_pressure,
+                                    -1.0, 1.0);
+    case Phase::unload:
+        return speed_;
+    default:
+        return 0.0;
+    }
+}
+
+bool CalenderRun::phase_over() const {
+    const double t = now() - phase_start_;
+    switch (phase_) {
+    case Phase::settle:
+        return fire_.rms_force() <= settle_force_ || t >= c_.calender_settle_time;
+    case Phase::load:
+        return c_.calender_mode == "pressure"
+                   ? pressure_ >= c_.calender_target_pressure
+                   : porosity_at(sim_->plate_height()) <= c_.calender_target_porosity;
+    case Phase::hold:
+        return t >= c_.calender_hold_time;
+    case Phase::unload:
+        return pressure_ <= 0.0 && sim_->plate_height() > highest_top();
+    case Phase::relax:
+        return t >= c_.calender_relaxation;
+    default:
+        return true;
+    }
+}
+
+void CalenderRun::next_phase() {
+    if (phase_ == Phase::hold) {
+        r_.peak_thickness = sim_->plate_height();
+        r_.peak_porosity = porosity_at(r_.peak_thickness);
+    }
+    if (phase_ == Phase::unload) sim_->set_plate_height(INFINITY); // the plate is gone
+    if (phase_ == Phase::settle) start_pressing();
+    write_frame();
+    phase_ = Phase(int(phase_) + 1);
+    phase_start_ = now();
+    log_->info("{} from t = {:.4g} us: plate at {:.4g} um, {:.4g} MPa", phase_name(phase_),
+               now() * 1e6, std::min(sim_->plate_height(), 1.0) * 1e6, pressure_ * 1e-6);
+}
+
+/// One engine step, the guard, the plate's move, the phase, a row when due.
+void CalenderRun::step() {
+    sim_->step();
+    if (phase_ == Phase::settle)
+        fire_.after_step(*sim_);
+    else
+        guard_.after_step(*sim_);
+    const bool plate = phase_ == Phase::load || phase_ == Phase::hold || phase_ == Phase::unload;
+    if (plate) {
+        sim_->set_plate_height(sim_->plate_height() + plate_velocity() * sim_->settings().dt);
+        pressure_ = plate_pressure();
+        r_.peak_pressure = std::max(r_.peak_pressure, pressure_);
+    } else {
+        pressure_ = 0.0;
+    }
+    // Loading must reach its target before the plate has crossed the film twice over.
+    if (phase_ == Phase::load && now() - phase_start_ > 2.0 * settled_thickness_ / speed_)
+        throw RunError("the plate crossed the film without reaching the target; lower "
+                       "calendering.target_pressure or raise calendering.target_porosity");
+    const double every = c_.calender_record_every / speed_;
+    if (now() - last_record_ >= every) record();
+    if (phase_over()) next_phase();
+}
+
+void CalenderRun::record() {
+    const double h = sim_->plate_height(), top = film_top();
+    const double inertial = phase_ == Phase::load && pressure_ > 0.0
+                                ? speed_ / h * ncm_diameter_ * std::sqrt(ncm_density_ / pressure_)
+                                : 0.0;
+    const StepStats& st = sim_->stats();
+    csv_.row({now(), double(int(phase_)), std::isfinite(h) ? h * 1e6 : NAN, pressure_ * 1e-6,
+              porosity_at(std::isfinite(h) ? h : top), top * 1e6, double(st.contacts),
+              st.max_overlap_rel, sim_->kinetic_energy(), sim_->settings().dt, inertial});
+    if (phase_ == Phase::load) {
+        load_pressure_.push_back(pressure_);
+        load_porosity_.push_back(porosity_at(h));
+        load_inertial_.push_back(inertial);
+    }
+    last_record_ = now();
+    if (++rows_ % 50 == 0) write_frame();
+    if (status_.tty())
+        status_.show(fmt::format("{} t = {:.4g} us, plate {:.4g} um, {:.4g} MPa, porosity {:.4f}",
+                                 phase_name(phase_), now() * 1e6,
+                                 std::isfinite(h) ? h * 1e6 : top * 1e6, pressure_ * 1e-6,
+                                 porosity_at(std::isfinite(h) ? h : top)));
+}
+
+void CalenderRun::write_frame() {
+    append_lammps_dump(dump_, sim_->particles(), film_.box, steps(),
+                       std::isfinite(sim_->plate_height()) ? sim_->plate_height() : highest_top());
+}
+
+CalenderResult CalenderRun::calender() {
+    r_.dried_thickness = film_top();
+    r_.dried_porosity = porosity_at(r_.dried_thickness);
+    dried_overlap_ = sim_->stats().max_overlap_rel;
+    try {
+        guard_.start(*sim_);
+        fire_ = FireRelaxation(1.8 * sim_->settings().dt); // within the guard's stable range
+        record();
+        while (phase_ != Phase::done) {
+            if (const int sig = stop_requested())
+                throw RunError(fmt::format("stopped by signal {} before the end", sig));
+            if (o_.stop_after_steps && steps() >= *o_.stop_after_steps)
+                throw RunError(fmt::format("stopped after step {} (--stop-after-steps)", steps()));
+            step();
+        }
+        r_.completed = true;
+    } catch (const RunError& e) {
+        r_.error = e.what();
+        log_->error("calendering stopped: {}", r_.error);
+    }
+    finish();
+    return r_;
+}
+
+void CalenderRun::finish() {
+    status_.clear();
+    r_.steps = steps();
+    r_.wall_time = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (r_.completed) {
+        r_.unloaded_thickness = film_top();
+        r_.unloaded_porosity = porosity_at(r_.unloaded_thickness);
+        r_.springback = (r_.unloaded_thickness - r_.peak_thickness) / r_.peak_thickness;
+    }
+    for (std::size_t k = 0; k < load_pressure_.size(); ++k)
+        if (load_pressure_[k] >= 0.01 * r_.peak_pressure)
+            r_.max_inertial_number = std::max(r_.max_inertial_number, load_inertial_[k]);
+    write_particles_csv(o_.output_dir / "final.csv", sim_->particles());
+    write_frame();
+    json s = summary();
+    if (r_.completed && c_.analysis_at_end) {
+        try {
+            analyse(s);
+        } catch (const std::exception& e) {
+            log_->warn("structure analysis failed: {}", e.what());
+        }
+    }
+    write_file_atomically(o_.output_dir / "summary.json",
+                          [&](std::ostream& os) { os << s.dump(2) << "\n"; });
+    log_->info("{}: peak {:.4g} MPa at {:.4g} um (porosity {:.4f}); unloaded {:.4g} um (porosity "
+               "{:.4f}, springback {:.2f} %); {} steps in {:.1f} s",
+               r_.completed ? "completed" : "stopped", r_.peak_pressure * 1e-6,
+               r_.peak_thickness * 1e6, r_.peak_porosity, r_.unloaded_thickness * 1e6,
+               r_.unloaded_porosity, 100.0 * r_.springback, r_.steps, r_.wall_time);
+}
+
+json CalenderRun::summary() const {
+    // The curve of the film under load: the rows before the plate carries 1 % of the peak are
+    // the plate's approach (porosity falls at no pressure) and would fit a vertical drop.
+    std::vector<double> p, e;
+    for (std::size_t k = 0; k < load_pressure_.size(); ++k)
+        if (load_pressure_[k] >= 0.01 * r_.peak_pressure) {
+            p.push_back(load_pressure_[k]);
+            e.push_back(load_porosity_[k]);
+        }
+    const CompactionFit fit = fit_compaction(p, e);
+    json s;
+    s["status"] = r_.completed ? "completed" : "failed";
+    if (!r_.completed) s["error"] = r_.error;
+    s["dried_film"] = {{"run", fs::absolute(o_.run_dir).string()},
+                       {"thickness_um", r_.dried_thickness * 1e6},
+                       {"porosity", r_.dried_porosity},
+                       {"max_overlap_rel", dried_overlap_}};
+    s["settled_film"] = {{"settled", settled_},
+                         {"thickness_um", settled_thickness_ * 1e6},
+                         {"porosity", porosity_at(settled_thickness_)},
+                         {"max_overlap_rel", settled_overlap_},
+                         {"rms_force_N", fire_.rms_force()},
+                         {"tolerance_N", settle_force_},
+                         {"fire_stops", fire_.stops()}};
+    s["mode"] = c_.calender_mode;
+    s["plate_speed_m_s"] = speed_;
+    s["peak"] = {{"pressure_MPa", r_.peak_pressure * 1e-6},
+                 {"thickness_um", r_.peak_thickness * 1e6},
+                 {"porosity", r_.peak_porosity}};
+    s["unloaded"] = {{"thickness_um", r_.unloaded_thickness * 1e6},
+                     {"porosity", r_.unloaded_porosity},
+                     {"springback_percent", 100.0 * r_.springback}};
+    s["compaction_fit"] = {{"ok", fit.ok},
+                           {"model", "porosity = porosity_min + (porosity_0 - porosity_min) "
+                                     "exp(-pressure / resistance)"},
+                           {"porosity_min", fit.porosity_min},
+                           {"porosity_0", fit.porosity_zero},
+                           {"resistance_MPa", fit.resistance * 1e-6},
+                           {"rms", fit.rms},
+                           {"points", fit.points}};
+    s["max_inertial_number"] = r_.max_inertial_number;
+    s["areal_loading_mg_cm2"] = film_.areal_mass * 100.0;
+    s["particles"] = {{"ncm", film_.n_ncm}, {"cb", film_.n_cb}};
+    s["steps"] = r_.steps;
+    s["time_simulated_s"] = now();
+    s["wall_time_s"] = r_.wall_time;
+    s["particle_steps_per_s"] =
+        double(r_.steps) * double(sim_->particles().size()) / std::max(r_.wall_time, 1e-9);
+    s["threads"] = sim_->threads();
+    s["version"] = DRYDEM_VERSION;
+    s["git"] = DRYDEM_GIT_HASH;
+    return s;
+}
+
+/// The structure analysis of the calendered film into analysis/, as a drying run's.
+void CalenderRun::analyse(json& s) const {
+    analysis::AnalysisOptions ao = end_of_run_analysis_options(c_);
+    ao.log = [this](const std::string& m) { log_->info("analysis: {}", m); };
+    const analysis::Structure st = analysis::structure_from_file(
+        read_particles(o_.output_dir / "final.csv"), file_defaults(c_));
+    const analysis::AnalysisResult ar = analysis::analyze_structure(st, ao);
+    write_analysis(o_.output_dir / "analysis", ar, ao, "final.csv");
+    json add;
+    add["analysis"] = "analysis/analysis.json";
+    add["coordination_mean"] = ar.coordination.mean();
+    if (ar.transport && ar.transport->solved()) {
+        const analysis::TransportLevel& L = ar.transport->reported();
+        add["tortuosity_factor_z"] = L.tau_z;
+        add["electronic_conductivity_S_m"] = L.electronic_z.sigma_eff;
+    }
+    s.update(add);
+}
+
+} // namespace
+
+CalenderResult run_calendering(const Config& c, const CalenderOptions& options) {
+    CalenderRun run(c, options);
+    return run.calender();
+}
+
+} // namespace drydem

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// The calendering run end to end (docs/calendering.md): a small film is pressed to a target
+// porosity (displacement mode) or pressure (pressure mode), held, unloaded and relaxed; every
+// particle and all the mass are kept, the phases follow one another, and the film springs back
+// without passing its dried height. The "dried film" is the drying run's own insertion at the wet
+// film's height (a loose film, so that the test does not pay for a drying run); what is tested is
+// the calendering's procedure, not a calendering result.
+#include "drydem/calendering/calender_run.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/drying/derived_checks.hpp"
+#include "drydem/io/particle_io.hpp"
+#include "drydem/setup/formulation.hpp"
+#include "drydem/setup/insertion.hpp"
+#include <gtest/gtest.h>
+#include "test_dirs.hpp"
+#include <nlohmann/json.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+
+using namespace drydem;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A 36 µm cell of 2.5 mg/cm² with one 3 µm NCM class, and the calendering's `extra` keys.
+Config small_film(std::vector<std::string> extra) {
+    std::vector<std::string> o{"run.threads=2",
+                               "film.box_x=36um",
+                               "film.box_y=36um",
+                               "film.areal_loading=2.5mg/cm^2",
+                               "formulation.ncm_diameters=[\"3 um\"]",
+                               "analysis.at_end=false",
+                               "calendering.plate_speed=2m/s",
+                               "calendering.hold_time=0.2us",
+                               "calendering.relaxation=0.5us",
+                               "calendering.record_every=20nm"};
+    o.insert(o.end(), extra.begin(), extra.end());
+    return load_config(default_config_toml(), "default", o);
+}
+
+/// A run folder holding config.toml and final.csv: the recipe's particles up to H_wet.
+fs::path dried_run(const Config& c, const fs::path& dir) {
+    const FilmRecipe recipe = make_recipe(c);
+    fs::create_directories(dir);
+    std::ofstream(dir / "config.toml") << to_toml(c);
+    write_particles_csv(dir / "final.csv", insert_particles(recipe, Box{c.box_x, c.box_y},
+                                                            recipe.wet_film_height, c.seed));
+    return dir;
+}
+
+double total_mass(const fs::path& file) {
+    double m = 0.0;
+    for (const ParticleRecord& r : read_particles(file).particles)
+        m += 4.0 / 3.0 * M_PI * r.radius * r.radius * r.radius * r.density;
+    return m;
+}
+
+std::vector<int> phases(const fs::path& file) {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    std::vector<int> out;
+    while (std::getline(in, line)) out.push_back(std::stoi(line.substr(line.find(',') + 1)));
+    return out;
+}
+
+nlohmann::json summary_of(const fs::path& dir) {
+    std::ifstream js(dir / "summary.json");
+    return nlohmann::json::parse(js);
+}
+
+TEST(CalenderEndToEnd, DisplacementModeReachesTheTargetUnloadsAndKeepsEveryParticle) {
+    const Config c = small_film({"calendering.target_porosity=0.45"});
+    const fs::path base = testing_support::temp_dir();
+    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
+    fs::create_directories(out);
+    const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
+    ASSERT_TRUE(r.completed) << r.error;
+    // Mass and particle count are conserved; ids are the run's.
+    const ParticleFile before = read_particles(run / "final.csv"),
+                       after = read_particles(out / "final.csv");
+    ASSERT_EQ(after.particles.size(), before.particles.size());
+    for (std::size_t k = 0; k < after.particles.size(); ++k)
+        EXPECT_EQ(after.particles[k].id, before.particles[k].id);
+    EXPECT_NEAR(total_mass(out / "final.csv") / total_mass(run / "final.csv"), 1.0, 1e-12);
+    // Pressed to the target, loaded, sprung back toward (not beyond) the dried height.
+    EXPECT_LE(r.peak_porosity, 0.45 + 1e-6);
+    EXPECT_GT(r.peak_porosity, 0.4);
+    EXPECT_GT(r.peak_pressure, 0.0);
+    EXPECT_GE(r.unloaded_thickness, r.peak_thickness * (1 - 1e-3));
+    EXPECT_LT(r.unloaded_thickness, r.dried_thickness);
+    EXPECT_GE(r.springback, -1e-3);
+    // The phases in order, each present.
+    const std::vector<int> ph = phases(out / "compaction.csv");
+    EXPECT_TRUE(std::is_sorted(ph.begin(), ph.end()));
+    for (int p = 0; p <= 4; ++p) EXPECT_NE(std::find(ph.begin(), ph.end(), p), ph.end()) << p;
+    const nlohmann::json s = summary_of(out);
+    EXPECT_EQ(s["status"], "completed");
+    EXPECT_TRUE(s["settled_film"]["settled"].get<bool>());
+    EXPECT_NEAR(s["peak"]["porosity"].get<double>(), r.peak_porosity, 1e-12);
+    EXPECT_TRUE(fs::exists(out / "snapshots" / "dump.lammpstrj"));
+}
+
+TEST(CalenderEndToEnd, PressureModeReachesTheTargetPressure) {
+    const Config c =
+        small_film({"calendering.mode=\"pressure\"", "calendering.target_pressure=0.5MPa"});
+    const fs::path base = testing_support::temp_dir();
+    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
+    fs::create_directories(out);
+    const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
+    ASSERT_TRUE(r.completed) << r.error;
+    EXPECT_GE(r.peak_pressure, 0.5e6);
+    EXPECT_LT(r.peak_porosity, r.dried_porosity);
+}
+
+TEST(CalenderEndToEnd, RefusesAFolderWithoutADriedFilm) {
+    const Config c = small_film({});
+    const fs::path base = testing_support::temp_dir();
+    fs::create_directories(base / "run");
+    fs::create_directories(base / "out");
+    try {
+        (void)run_calendering(c, {base / "run", base / "out", true, false, std::nullopt});
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("no final.csv"), std::string::npos) << e.what();
+    }
+}
+
+} // namespace
