@@ -24,6 +24,9 @@ nwarm=${NWARM:-200}
 repeat=${REPEAT:-3}
 out=${OUT:-$here/results/peer_bench/${size}um}
 mkdir -p "$out"
+out=$(cd "$out" && pwd) # the peers run inside it: a relative OUT would lose the data file
+drydem=$(realpath "$drydem")
+if [[ -n ${OLD_DRYDEM:-} ]]; then OLD_DRYDEM=$(realpath "$OLD_DRYDEM"); fi
 data="$out/settled_${size}um.data"
 if [[ ! -f $data ]]; then
   if [[ -f $peers/data/settled_${size}um.data ]]; then cp "$peers/data/settled_${size}um.data" "$data"

@@ -302,6 +302,11 @@ CalenderResult CalenderRun::calender() {
         r_.completed = true;
     } catch (const RunError& e) {
         r_.error = e.what();
+        // The engine's diagnosis speaks of the drying's scaled forces; here the plate presses.
+        if (r_.error.find("runaway overlap") != std::string::npos)
+            r_.error += ". In calendering the plate presses the pair together: the film cannot "
+                        "reach this target as spheres (docs/calendering.md); raise "
+                        "calendering.target_porosity or lower calendering.target_pressure";
         log_->error("calendering stopped: {}", r_.error);
     }
     finish();
