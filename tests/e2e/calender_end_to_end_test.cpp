@@ -58,12 +58,22 @@ double total_mass(const fs::path& file) {
     return m;
 }
 
-std::vector<int> phases(const fs::path& file) {
+/// compaction.csv's column `name`, one value per row ("" reads as NaN).
+std::vector<double> column(const fs::path& file, const std::string& name) {
     std::ifstream in(file);
-    std::string line;
+    std::string line, cell;
     std::getline(in, line);
-    std::vector<int> out;
-    while (std::getline(in, line)) out.push_back(std::stoi(line.substr(line.find(',') + 1)));
+    std::stringstream header(line);
+    int k = 0, at = -1;
+    for (; std::getline(header, cell, ','); ++k)
+        if (cell == name) at = k;
+    EXPECT_GE(at, 0) << name;
+    std::vector<double> out;
+    while (std::getline(in, line)) {
+        std::stringstream row(line);
+        for (int c = 0; std::getline(row, cell, ','); ++c)
+            if (c == at) out.push_back(cell.empty() ? NAN : std::stod(cell));
+    }
     return out;
 }
 
@@ -94,9 +104,16 @@ TEST(CalenderEndToEnd, DisplacementModeReachesTheTargetUnloadsAndKeepsEveryParti
     EXPECT_LT(r.unloaded_thickness, r.dried_thickness);
     EXPECT_GE(r.springback, -1e-3);
     // The phases in order, each present.
-    const std::vector<int> ph = phases(out / "compaction.csv");
+    const std::vector<double> ph = column(out / "compaction.csv", "phase");
     EXPECT_TRUE(std::is_sorted(ph.begin(), ph.end()));
     for (int p = 0; p <= 4; ++p) EXPECT_NE(std::find(ph.begin(), ph.end(), p), ph.end()) << p;
+    // Held at rest, the film's contact stress carries the plate's pressure (Love-Weber).
+    const std::vector<double> p_plate = column(out / "compaction.csv", "pressure_MPa"),
+                              s_zz = column(out / "compaction.csv", "stress_zz_MPa");
+    const std::size_t last_hold =
+        std::size_t(std::find(ph.begin(), ph.end(), 3.0) - ph.begin()) - 1;
+    ASSERT_EQ(ph[last_hold], 2.0);
+    EXPECT_NEAR(s_zz[last_hold], p_plate[last_hold], 0.02 * p_plate[last_hold]);
     const nlohmann::json s = summary_of(out);
     EXPECT_EQ(s["status"], "completed");
     EXPECT_TRUE(s["settled_film"]["settled"].get<bool>());

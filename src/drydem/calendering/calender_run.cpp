@@ -123,7 +123,9 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
       speed_(c.calender_plate_speed),
       csv_(o.output_dir / "compaction.csv",
            {"time_s", "phase", "plate_height_um", "pressure_MPa", "porosity", "film_top_um",
-            "contacts", "max_overlap_rel", "kinetic_energy_J", "dt_s", "inertial_number"}) {
+            "contacts", "max_overlap_rel", "kinetic_energy_J", "dt_s", "inertial_number",
+            "stress_xx_MPa", "stress_yy_MPa", "stress_zz_MPa", "stress_xy_MPa", "stress_xz_MPa",
+            "stress_yz_MPa"}) {
     ncm_diameter_ = ncm_density_ = 0.0;
     for (const SizeClass& s : film_.recipe.species)
         if (!s.is_cb && s.diameter > ncm_diameter_)
@@ -262,9 +264,12 @@ void CalenderRun::record() {
                                 ? speed_ / h * ncm_diameter_ * std::sqrt(ncm_density_ / pressure_)
                                 : 0.0;
     const StepStats& st = sim_->stats();
+    // The film's contact stress over the cell up to the plate (or the film's top without it).
+    const Sym3 s = sim_->contact_stress(film_.box.area() * (std::isfinite(h) ? h : top));
     csv_.row({now(), double(int(phase_)), std::isfinite(h) ? h * 1e6 : NAN, pressure_ * 1e-6,
               porosity_at(std::isfinite(h) ? h : top), top * 1e6, double(st.contacts),
-              st.max_overlap_rel, sim_->kinetic_energy(), sim_->settings().dt, inertial});
+              st.max_overlap_rel, sim_->kinetic_energy(), sim_->settings().dt, inertial,
+              s.xx * 1e-6, s.yy * 1e-6, s.zz * 1e-6, s.xy * 1e-6, s.xz * 1e-6, s.yz * 1e-6});
     if (phase_ == Phase::load) {
         load_pressure_.push_back(pressure_);
         load_porosity_.push_back(porosity_at(h));

@@ -83,6 +83,48 @@ std::vector<std::int32_t> Simulation::coordination() const {
     return z;
 }
 
+Sym3 Simulation::contact_stress(double volume) const {
+    Sym3 s;
+    auto add = [&s](const Vec3& f, const Vec3& d) { // -= f ⊗ d, symmetrised
+        s.xx -= f.x * d.x, s.yy -= f.y * d.y, s.zz -= f.z * d.z;
+        s.xy -= 0.5 * (f.x * d.y + f.y * d.x);
+        s.xz -= 0.5 * (f.x * d.z + f.z * d.x);
+        s.yz -= 0.5 * (f.y * d.z + f.z * d.y);
+    };
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        if (nl_.owners() == p_.size())
+            for (std::uint32_t k = nl_.begin(i); k < nl_.end(i); ++k) {
+                const std::uint32_t j = nl_.partner(k);
+                const Vec3 d = box_.minimum_image(p_.position[i], p_.position[j]);
+                const double dist2 = norm2(d);
+                if (dist2 >= nl_.reach2(k) || dist2 == 0.0) continue;
+                const PairGeometry g = make_pair_geometry(
+                    d, std::sqrt(dist2), p_.radius[i], p_.radius[j], p_.mass[i], p_.mass[j],
+                    p_.velocity[i], p_.velocity[j], p_.omega[i], p_.omega[j]);
+                PairState kept = nl_.state(k);
+                add(pair_interaction(g, ff_.pair_params(p_.species[i], p_.species[j]), kept, 0.0)
+                        .force_i,
+                    d);
+            }
+        // The walls: their contact point lies on the plane, straight below or above the centre.
+        const BodyGeometry g = body_geometry(i, p_.velocity[i], p_.omega[i], 0.0);
+        const BodyParams& bp = ff_.body_params(p_.species[i]);
+        BodyState kept = body_state_[i];
+        BodyForce sub{}, plate{};
+        SubstrateContactLaw::add_force(g, law<SubstrateContactLaw>(bp),
+                                       BodyLaws::state<SubstrateContactLaw>(kept), 0.0, sub,
+                                       nullptr);
+        PlateContactLaw::add_force(g, law<PlateContactLaw>(bp),
+                                   BodyLaws::state<PlateContactLaw>(kept), 0.0, plate, nullptr);
+        add(sub.force, Vec3{0.0, 0.0, -p_.position[i].z});
+        if (std::isfinite(plate_height_))
+            add(plate.force, Vec3{0.0, 0.0, plate_height_ - p_.position[i].z});
+    }
+    const double inv = 1.0 / volume;
+    s.xx *= inv, s.yy *= inv, s.zz *= inv, s.xy *= inv, s.xz *= inv, s.yz *= inv;
+    return s;
+}
+
 EngineState Simulation::state() const {
     return {p_,           body_state_, nl_.state(), step_,  time_,          liquid_level_,
             settings_.dt, stats_,      accel_,      alpha_, force_rebuild_, rebuilds_since_sort_};

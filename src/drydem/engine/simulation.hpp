@@ -138,6 +138,12 @@ public:
 
     /// Contacts (overlap > 0) per particle in storage order, the substrate counted as a partner.
     [[nodiscard]] std::vector<std::int32_t> coordination() const;
+    /// The packing's stress from its contacts (Love-Weber), compression positive [Pa]:
+    ///   s = -(1/V) [ Σ_pairs f_i ⊗ (x_j - x_i) + Σ_wall contacts f ⊗ (x_c - x) ]
+    /// f_i the pair laws' force on i (velocities as they are, nothing advanced), x_c the contact
+    /// point on the substrate or the plate. Over a film between the substrate and a plate in
+    /// equilibrium, s_zz is the plate's pressure; V is the caller's (cell area × height).
+    [[nodiscard]] Sym3 contact_stress(double volume) const;
     /// Translational + rotational kinetic energy [J].
     [[nodiscard]] double kinetic_energy() const;
     /// Total linear momentum [kg m/s].

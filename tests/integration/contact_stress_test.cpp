@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// The packing's contact stress (Simulation::contact_stress, Love-Weber): over a column between
+// the substrate and a plate in equilibrium its s_zz is the plate's pressure, and nothing acts
+// sideways; a pair alone gives f d / V.
+#include "drydem/engine/fire.hpp"
+#include "drydem/forces/hertz_mindlin.hpp"
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace drydem;
+
+namespace {
+constexpr double kR = 2e-6, kRho = 4700, kL = 40e-6;
+
+TEST(ContactStress, ColumnUnderThePlateCarriesThePlatePressure) {
+    ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.5);
+    for (BodyParams& b : ff.body) law<PlateContactLaw>(b) = law<SubstrateContactLaw>(b);
+    ParticleStore p;
+    p.add(1, 0, kR, kRho, {5e-6, 5e-6, kR});
+    p.add(2, 0, kR, kRho, {5e-6, 5e-6, 3 * kR});
+    Simulation sim(std::move(p), Box{kL, kL}, ff, {2e-10, 0.1e-6, 1});
+    const double plate = 4 * kR - 30e-9; // 30 nm of overlap to share among three contacts
+    sim.set_plate_height(plate);
+    FireRelaxation fire(2e-10);
+    for (int k = 0; k < 40000 && fire.rms_force() > 1e-12; ++k) {
+        sim.step();
+        fire.after_step(sim);
+    }
+    const double pressure = -sim.body_law_total<PlateContactLaw>().force.z / (kL * kL);
+    ASSERT_GT(pressure, 0.0);
+    const Sym3 s = sim.contact_stress(kL * kL * plate);
+    EXPECT_NEAR(s.zz, pressure, 1e-6 * pressure);
+    EXPECT_NEAR(s.xx, 0.0, 1e-9 * pressure);
+    EXPECT_NEAR(s.xz, 0.0, 1e-9 * pressure);
+}
+
+TEST(ContactStress, APairAloneGivesForceTimesBranchOverVolume) {
+    ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.5);
+    ff.remove_substrate();
+    ParticleStore p;
+    const double delta = 10e-9;
+    const Vec3 n = Vec3{1.0, 2.0, 2.0} / 3.0;
+    p.add(1, 0, kR, kRho, {20e-6, 20e-6, 20e-6});
+    p.add(2, 0, kR, kRho, Vec3{20e-6, 20e-6, 20e-6} + (2 * kR - delta) * n);
+    Simulation sim(std::move(p), Box{kL, kL}, ff, {2e-10, 0.1e-6, 1});
+    const double e_star = mix_hertz_mindlin(142e9, 0.3, 142e9, 0.3, 0.5, 0.5, 0.0).e_star;
+    const double f = 4.0 / 3.0 * e_star * std::sqrt(kR / 2) * std::pow(delta, 1.5);
+    const double v = 1e-15, d = 2 * kR - delta;
+    const Sym3 s = sim.contact_stress(v);
+    EXPECT_NEAR(s.xx, f * d * n.x * n.x / v, 1e-9 * f * d / v);
+    EXPECT_NEAR(s.yz, f * d * n.y * n.z / v, 1e-9 * f * d / v);
+    EXPECT_NEAR(s.zz, f * d * n.z * n.z / v, 1e-9 * f * d / v);
+}
+
+} // namespace
