@@ -7,6 +7,7 @@
 #pragma once
 #include "drydem/forces/body_law.hpp"
 #include "drydem/forces/hertz_mindlin.hpp"
+#include <string_view>
 
 namespace drydem {
 
@@ -28,12 +29,14 @@ inline BodyResistance wall_resistance(double a_n, double a_t, double lever, cons
 }
 
 /// Adds the contact's force and torque; advances (or erases, out of contact) its history.
+/// E* = 0 (a wall that is not there, e.g. the plate while the film dries): one compare.
 [[gnu::always_inline]] inline void wall_contact_force(const BodyGeometry& g,
                                                       const HertzMindlinParams& p,
                                                       ContactHistory& s, double dt, BodyForce& f,
                                                       BodyResistance* damping, const Wall& w) {
+    if (p.e_star == 0.0) return;
     const double overlap = wall_overlap(g, w);
-    if (overlap <= 0.0 || p.e_star == 0.0) {
+    if (overlap <= 0.0) {
         s = {};
         return;
     }
@@ -69,5 +72,39 @@ inline BodyResistance wall_contact_kept(const BodyGeometry& g, const HertzMindli
     const bool slides = hertz_mindlin_sliding(co, g.r, overlap, p, s);
     return wall_resistance(co.gamma_n, slides ? 0.0 : co.gamma_t, g.r - overlap, w);
 }
+
+/// The contact with one wall as a body law (body_law.hpp), for a `Side` that names it and places
+/// its plane (substrate_contact.hpp, plate_contact.hpp). Its state is the contact's history,
+/// erased when the contact opens (M-2.3, M-2.5).
+template <class Side>
+struct WallContactLaw {
+    using Params = HertzMindlinParams; ///< the species' material mixed with the wall's
+    using State = ContactHistory;
+    static constexpr std::string_view name = Side::name;
+    static constexpr auto limits = HertzMindlinLaw::limits;
+
+    [[gnu::always_inline]] static inline void add_force(const BodyGeometry& g, const Params& p,
+                                                        State& s, double dt, BodyForce& f,
+                                                        BodyResistance* damping) {
+        wall_contact_force(g, p, s, dt, f, damping, Side::wall(g));
+    }
+    /// γ_n, γ_t at the deepest overlap within g.reach (the sticking contact's: an upper bound).
+    static BodyResistance resistance(const BodyGeometry& g, const Params& p) {
+        return wall_contact_bound(g, p, Side::wall(g), false);
+    }
+    /// S_n, S_t at the deepest overlap within g.reach (the springs stiffen as it grows).
+    static BodyResistance stiffness(const BodyGeometry& g, const Params& p) {
+        return wall_contact_bound(g, p, Side::wall(g), true);
+    }
+    /// The quasi-static step's resistance: γ_n, and γ_t unless the contact slides.
+    static BodyResistance resistance(const BodyGeometry& g, const Params& p, const State& s) {
+        return wall_contact_kept(g, p, s, Side::wall(g), false);
+    }
+    /// The quasi-static step's stiffness: dF_n/dδ, and S_t unless the contact slides.
+    static BodyResistance tangent(const BodyGeometry& g, const Params& p, const State& s) {
+        return wall_contact_kept(g, p, s, Side::wall(g), true);
+    }
+    static bool keeps(const State& s) { return s.kept(); }
+};
 
 } // namespace drydem
