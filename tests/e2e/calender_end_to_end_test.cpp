@@ -83,7 +83,8 @@ nlohmann::json summary_of(const fs::path& dir) {
 }
 
 TEST(CalenderEndToEnd, DisplacementModeReachesTheTargetUnloadsAndKeepsEveryParticle) {
-    const Config c = small_film({"calendering.target_porosity=0.45"});
+    const Config c =
+        small_film({"calendering.mode=\"displacement\"", "calendering.target_porosity=0.45"});
     const fs::path base = testing_support::temp_dir();
     const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
     fs::create_directories(out);

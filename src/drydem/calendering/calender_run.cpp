@@ -81,9 +81,16 @@ private:
     /// Simulated time since the settling started [s].
     [[nodiscard]] double now() const { return sim_->time(); }
     [[nodiscard]] std::int64_t steps() const { return sim_->step_count(); }
-    /// The film's thickness: the 99th percentile of the particle tops, which a particle thrown
-    /// up by the unloading does not move (the highest top does, by micrometres).
-    [[nodiscard]] double film_top() const { return top_percentile(sim_->particles(), 0.99); }
+    /// The film's thickness: the highest top of a particle that touches another one or a wall
+    /// (what a plate or a micrometer meets); a particle the unloading threw up is not the film.
+    [[nodiscard]] double film_top() const {
+        const ParticleStore& p = sim_->particles();
+        const std::vector<std::int32_t> z = sim_->coordination();
+        double top = 0.0;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (z[i] > 0) top = std::max(top, p.position[i].z + p.radius[i]);
+        return top > 0.0 ? top : highest_top();
+    }
     [[nodiscard]] double highest_top() const { return top_percentile(sim_->particles(), 1.0); }
     void finish();
     [[nodiscard]] json summary() const;
@@ -110,6 +117,7 @@ private:
     std::vector<double> load_pressure_, load_porosity_, load_inertial_;
     CalenderResult r_;
     double settled_thickness_ = 0.0, settled_overlap_ = 0.0, dried_overlap_ = 0.0;
+    double peak_plate_ = 0.0; ///< the plate's height at the end of the hold [m]
 };
 
 CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
@@ -222,7 +230,7 @@ bool CalenderRun::phase_over() const {
 
 void CalenderRun::next_phase() {
     if (phase_ == Phase::hold) {
-        r_.peak_thickness = sim_->plate_height();
+        r_.peak_thickness = peak_plate_ = sim_->plate_height();
         r_.peak_porosity = porosity_at(r_.peak_thickness);
     }
     if (phase_ == Phase::unload) sim_->set_plate_height(INFINITY); // the plate is gone
@@ -377,7 +385,9 @@ json CalenderRun::summary() const {
     s["plate_speed_m_s"] = speed_;
     s["peak"] = {{"pressure_MPa", r_.peak_pressure * 1e-6},
                  {"thickness_um", r_.peak_thickness * 1e6},
-                 {"porosity", r_.peak_porosity}};
+                 {"porosity", r_.peak_porosity},
+                 {"plate_height_um", peak_plate_ * 1e6},
+                 {"porosity_below_plate", porosity_at(peak_plate_)}};
     s["unloaded"] = {{"thickness_um", r_.unloaded_thickness * 1e6},
                      {"porosity", r_.unloaded_porosity},
                      {"springback_percent", 100.0 * r_.springback}};

@@ -25,12 +25,12 @@ struct CalenderOptions {
 struct CalenderResult {
     bool completed = false;
     std::string error;               ///< why it stopped early, or empty
-    double dried_thickness = 0.0;    ///< 99th percentile of the particle tops before [m]
+    double dried_thickness = 0.0;    ///< highest top of a touching particle before [m]
     double dried_porosity = 0.0;     ///< at that thickness
     double peak_pressure = 0.0;      ///< largest plate pressure [Pa]
-    double peak_thickness = 0.0;     ///< plate height at the end of the hold [m]
+    double peak_thickness = 0.0;     ///< the plate's height at the end of the hold [m]
     double peak_porosity = 0.0;      ///< at the plate height at the end of the hold
-    double unloaded_thickness = 0.0; ///< 99th percentile of the tops after relaxation [m]
+    double unloaded_thickness = 0.0; ///< the same after relaxation [m]
     double unloaded_porosity = 0.0;
     double springback = 0.0;          ///< (unloaded - peak) / peak thickness
     double max_inertial_number = 0.0; ///< while loading above 1 % of the peak pressure
