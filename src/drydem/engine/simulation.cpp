@@ -120,6 +120,9 @@ Sym3 Simulation::contact_stress(double volume) const {
         if (std::isfinite(plate_height_))
             add(plate.force, Vec3{0.0, 0.0, plate_height_ - p_.position[i].z});
     }
+    for (const Bond& b : bonds_.bonds)
+        if (b.state.intact())
+            add(bond_force(b).force_i, box_.minimum_image(p_.position[b.i], p_.position[b.j]));
     const double inv = 1.0 / volume;
     s.xx *= inv, s.yy *= inv, s.zz *= inv, s.xy *= inv, s.xz *= inv, s.yz *= inv;
     return s;
@@ -164,6 +167,12 @@ void Simulation::rebuild_neighbors() {
         };
         carry(body_state_);
         if (semi_implicit()) carry(body_resistance_);
+        if (!bonds_.bonds.empty()) {
+            std::vector<std::uint32_t> new_index(p_.size());
+            for (std::size_t k = 0; k < p_.size(); ++k)
+                new_index[old_index[p_.id[k]]] = std::uint32_t(k);
+            for (Bond& b : bonds_.bonds) b.i = new_index[b.i], b.j = new_index[b.j];
+        }
     } else {
         nl_.build(p_, box_, range, owner_range, sort);
     }
@@ -182,6 +191,63 @@ void Simulation::compute_forces() {
     if (semi_implicit()) {
 #pragma omp parallel for schedule(static) num_threads(threads_)
         for (std::size_t i = 0; i < p_.size(); ++i) implicit_acceleration(i);
+    }
+}
+
+void Simulation::set_bonds(BondNetwork bonds) {
+    if (!bonds.bonds.empty() && settings_.integrator != Integrator::explicit_verlet)
+        throw InputError("solid bonds need the explicit integrator (numerics.integrator = "
+                         "\"explicit\"): their damping is not part of the implicit steps");
+    if (bonds.species_count != ff_.species_count)
+        throw InputError(fmt::format("bonds: parameters for {} species, the force field has {}",
+                                     bonds.species_count, ff_.species_count));
+    if (const auto bad = bonds.limit_violations(); !bad.empty())
+        throw InputError(fmt::format("solid bond parameter out of range: {}", bad.front()));
+    for (const Bond& b : bonds.bonds)
+        if (b.i >= p_.size() || b.j >= p_.size() || b.i == b.j)
+            throw InputError(
+                fmt::format("bond between particles {} and {} of {}", b.i, b.j, p_.size()));
+    bonds_ = std::move(bonds);
+    bond_force_.assign(bonds_.bonds.size(), {});
+    force_rebuild_ = true;
+}
+
+PairForce Simulation::bond_force(const Bond& b) const {
+    const Vec3 d = box_.minimum_image(p_.position[b.i], p_.position[b.j]);
+    const PairGeometry g =
+        make_pair_geometry(d, norm(d), p_.radius[b.i], p_.radius[b.j], p_.mass[b.i], p_.mass[b.j],
+                           p_.velocity[b.i], p_.velocity[b.j], p_.omega[b.i], p_.omega[b.j]);
+    SolidBondState kept = b.state;
+    return solid_bond(g, bonds_.pair(p_.species[b.i], p_.species[b.j]), kept, 0.0);
+}
+
+// Each bond's force in parallel (its own slot), then added to the particles in bond order: the
+// result does not depend on the thread count. Bonds are few beside the pairs (the carbon-binder
+// pairs within a gap), so the serial sum costs little.
+void Simulation::bond_forces() {
+    const double dt = settings_.dt;
+    const std::size_t nb = bonds_.bonds.size();
+    bond_force_.resize(nb);
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (std::size_t k = 0; k < nb; ++k) {
+        Bond& b = bonds_.bonds[k];
+        if (!b.state.intact()) {
+            bond_force_[k] = {};
+            continue;
+        }
+        const Vec3 d = box_.minimum_image(p_.position[b.i], p_.position[b.j]);
+        const PairGeometry g = make_pair_geometry(d, norm(d), p_.radius[b.i], p_.radius[b.j],
+                                                  p_.mass[b.i], p_.mass[b.j], p_.velocity[b.i],
+                                                  p_.velocity[b.j], p_.omega[b.i], p_.omega[b.j]);
+        bond_force_[k] = solid_bond(g, bonds_.pair(p_.species[b.i], p_.species[b.j]), b.state, dt);
+    }
+    for (std::size_t k = 0; k < nb; ++k) {
+        const Bond& b = bonds_.bonds[k];
+        const PairForce& f = bond_force_[k];
+        p_.force[b.i] += f.force_i;
+        p_.force[b.j] -= f.force_i;
+        p_.torque[b.i] += f.torque_i;
+        p_.torque[b.j] += f.torque_j;
     }
 }
 
@@ -206,6 +272,7 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     stats_.contacts = contacts;
     stats_.wall_contacts = wall_contacts;
     stats_.max_overlap_rel = max_overlap;
+    if (!bonds_.bonds.empty()) bond_forces();
     times_.pair += omp_get_wtime() - t0;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 #include "drydem/core/box.hpp"
 #include "drydem/core/particles.hpp"
+#include "drydem/engine/bond_network.hpp"
 #include "drydem/engine/quasi_static.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/neighbor/neighbor_list.hpp"
@@ -116,6 +117,15 @@ public:
                 liquid_level_,  reach, plate_height_};
     }
 
+    /// The solid bonds (bond_network.hpp), acting from the next force evaluation on: their
+    /// indices refer to the present storage order. Explicit integrator only (their damping is not
+    /// in the semi-implicit self-blocks nor in the quasi-static system); InputError otherwise,
+    /// or for a parameter outside the bond law's limits or an index out of range.
+    void set_bonds(BondNetwork bonds);
+    [[nodiscard]] const BondNetwork& bonds() const { return bonds_; }
+    /// The force on i and the torques of bond b at the present state (its history not advanced).
+    [[nodiscard]] PairForce bond_force(const Bond& b) const;
+
     [[nodiscard]] const ParticleStore& particles() const { return p_; }
     /// What the body laws keep per particle (storage order): `BodyLaws::state<L>(s[i])`.
     [[nodiscard]] const std::vector<BodyState>& body_states() const { return body_state_; }
@@ -170,8 +180,10 @@ private:
     void rebuild_neighbors();
     /// Particle forces of particle i into the store (M-9.5), counting substrate contacts.
     void body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap);
-    /// Pair forces added to the store; completes the step statistics.
+    /// Pair forces (and the bonds') added to the store; completes the step statistics.
     void pair_forces(std::size_t wall_contacts, double wall_overlap);
+    /// The bonds' forces added to the store (after the pair forces); breaks the bonds that fail.
+    void bond_forces();
     template <bool SelfBlocks>
     void pair_loop(std::size_t& contacts, double& max_overlap);
     /// First row of thread t's share of the list (rows weighted by their slots + 1), t < parts.
@@ -201,6 +213,8 @@ private:
 
     ParticleStore p_;
     std::vector<BodyState> body_state_; ///< per particle, permuted with it on a re-sort
+    BondNetwork bonds_;                 ///< indices renumbered on a re-sort
+    std::vector<PairForce> bond_force_; ///< per bond, the last evaluation (scratch)
     Box box_;
     ForceField ff_;
     EngineSettings settings_;

@@ -54,6 +54,7 @@ struct GuardInputs {
     const ForceField& ff;
     double liquid_level;
     double plate; ///< the calendering plate's height (+inf: none)
+    const BondNetwork& bonds;
     bool semi;
     std::size_t threads;
     [[nodiscard]] RowSplit rows() const { return {p.size(), threads}; }
@@ -130,7 +131,20 @@ GuardOperators assemble_operators(const GuardInputs& in) {
                 for (std::size_t u = 0; u < threads; ++u) op.blocks[i] += share[u][i];
         }
     }
-
+    // The solid bonds (explicit integrator only): their springs and damping at the present state;
+    // a bond's stiffness does not change with its stretch.
+    for (const Bond& b : in.bonds.bonds) {
+        if (!b.state.intact()) continue;
+        const Vec3 d = in.box.minimum_image(p.position[b.i], p.position[b.j]);
+        const PairGeometry g = make_pair_geometry(d, norm(d), p.radius[b.i], p.radius[b.j],
+                                                  p.mass[b.i], p.mass[b.j], {}, {}, {}, {});
+        const SolidBondParams& bp = in.bonds.pair(p.species[b.i], p.species[b.j]);
+        op.stiffness[0].pairs.push_back(
+            {b.i, b.j, g.n, solid_bond_stiffness(g, bp, b.state.rest_length)});
+        if (!semi)
+            op.damping[0].pairs.push_back(
+                {b.i, b.j, g.n, solid_bond_resistance(g, bp, b.state.rest_length)});
+    }
     return op;
 }
 
@@ -211,7 +225,7 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
     if (p_.size() == 0 || nl_.owners() != p_.size()) return out;
     const bool semi = semi_implicit();
     const GuardInputs in{
-        p_, nl_, box_, ff_, liquid_level_, plate_height_, semi, std::size_t(threads_)};
+        p_, nl_, box_, ff_, liquid_level_, plate_height_, bonds_, semi, std::size_t(threads_)};
     const GuardOperators op = assemble_operators(in);
     const std::uint64_t step = std::uint64_t(step_);
     if (!semi)
