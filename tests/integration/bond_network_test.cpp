@@ -128,6 +128,57 @@ TEST(BondNetwork, BondedClusterConservesMomentum) {
     EXPECT_EQ(sim.bonds().intact(), 54u);
 }
 
+/// Kinetic plus the bonds' elastic energy ½ k̄_n A s² + ½ k̄_s A |u_s|² + ½ k̄_n I |θ_b|² +
+/// ½ k̄_s J θ_t² (header of solid_bond.hpp).
+double total_energy(const Simulation& sim) {
+    double e = sim.kinetic_energy();
+    const ParticleStore& p = sim.particles();
+    for (const Bond& b : sim.bonds().bonds) {
+        const Vec3 d = sim.box().minimum_image(p.position[b.i], p.position[b.j]);
+        const PairGeometry g = make_pair_geometry(d, norm(d), p.radius[b.i], p.radius[b.j],
+                                                  p.mass[b.i], p.mass[b.j], {}, {}, {}, {});
+        const PairResistance k = solid_bond_stiffness(
+            g, sim.bonds().pair(p.species[b.i], p.species[b.j]), b.state.rest_length);
+        const double s = norm(d) - b.state.rest_length;
+        e +=
+            0.5 * (k.normal * s * s + k.sliding * norm2(b.state.shear) +
+                   k.rolling * norm2(b.state.bending) + k.twisting * b.state.twist * b.state.twist);
+    }
+    return e;
+}
+
+TEST(BondNetwork, UndampedBondedChainConservesEnergy) {
+    // A bent chain of unequal spheres, spinning and moving: every mode of the bonds loaded.
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    ParticleStore p;
+    const double radii[] = {kR, 4 * kR, kR, 2 * kR, kR};
+    Vec3 x{5e-6, 8e-6, 8e-6};
+    for (int k = 0; k < 5; ++k) {
+        if (k > 0) x += (radii[k - 1] + radii[k] + 20e-9) * Vec3{0.8, 0.6 * (k % 2 ? 1 : -1), 0};
+        p.add(std::uint32_t(k + 1), 0, radii[k], kRho, x);
+        p.velocity.back() = 2e-3 * Vec3{u(rng), u(rng), u(rng)};
+        p.omega.back() = 2e3 * Vec3{u(rng), u(rng), u(rng)};
+    }
+    Simulation sim(std::move(p), Box{kL, kL}, no_walls(), {1e-11, 0.1e-6, 1});
+    BondNetwork net = network();
+    for (std::uint32_t id = 1; id < 5; ++id) {
+        Bond b{index_of(sim, id), index_of(sim, id + 1), {}};
+        b.state.rest_length = norm(sim.particles().position[b.i] - sim.particles().position[b.j]);
+        net.bonds.push_back(b);
+    }
+    sim.set_bonds(std::move(net));
+    sim.compute_forces();
+    const double e0 = total_energy(sim);
+    double drift = 0.0;
+    for (int k = 0; k < 50; ++k) {
+        sim.run(200);
+        drift = std::max(drift, std::abs(total_energy(sim) - e0));
+    }
+    EXPECT_EQ(sim.bonds().intact(), 4u);
+    EXPECT_LT(drift, 1e-3 * e0);
+}
+
 TEST(BondNetwork, ResortingKeepsEveryBondOnItsPair) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(0.0, 1.0);

@@ -112,6 +112,8 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
     yield("NCM-plate", law<PlateContactLaw>(ff.body_params(ncm)), r_ncm);
     yield("NCM-substrate", law<SubstrateContactLaw>(ff.body_params(ncm)), r_ncm);
     yield("NCM-CB", law<HertzMindlinLaw>(ff.pair_params(ncm, cb)), r_ncm * r_cb / (r_ncm + r_cb));
+    yield("CB-CB", law<HertzMindlinLaw>(ff.pair_params(cb, cb)), 0.5 * r_cb);
+    yield("CB-plate", law<PlateContactLaw>(ff.body_params(cb)), r_cb);
     fmt::print(
         "  CB spheres E = {:.3g} GPa, plate E = {:.3g} GPa\n",
         (c.calender_cb_youngs_modulus > 0 ? c.calender_cb_youngs_modulus : c.cb_youngs_modulus) *

@@ -3,8 +3,9 @@
 //   1. set-up: the film's recipe and box from the drying run's config, its final.csv.
 //   2. settle: in the dry state (elastic-plastic NCM contacts, no liquid), the film relaxes the
 //      overlaps the drying left, since the capillary force that made them is gone: FIRE
-//      (engine/fire.hpp) to a static state (calendering.settle_*). Then the plate comes down
-//      onto the highest particle.
+//      (engine/fire.hpp) to a static state (calendering.settle_*). Then the binder bridges of
+//      the dry film become solid bonds (bonding.hpp), and the plate comes down onto the highest
+//      particle.
 //   3. load: the plate moves down at calendering.plate_speed until the porosity below it is the
 //      target (displacement mode) or it carries the target pressure (pressure mode).
 //   4. hold: calendering.hold_time at the plate height (pressure mode: a servo on the pressure).
@@ -14,6 +15,7 @@
 // A row of compaction.csv every calendering.record_every of plate travel.
 #include "drydem/calendering/calender_run.hpp"
 #include "drydem/analysis/analyze.hpp"
+#include "drydem/calendering/bonding.hpp"
 #include "drydem/calendering/compaction_fit.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
@@ -92,8 +94,11 @@ private:
         return top > 0.0 ? top : highest_top();
     }
     [[nodiscard]] double highest_top() const { return top_percentile(sim_->particles(), 1.0); }
+    void form_bonds();
+    void write_particle_bonds() const;
     void finish();
     [[nodiscard]] json summary() const;
+    [[nodiscard]] json bonds_summary() const;
     void analyse(json& s) const;
 
     const Config& c_;
@@ -118,6 +123,9 @@ private:
     CalenderResult r_;
     double settled_thickness_ = 0.0, settled_overlap_ = 0.0, dried_overlap_ = 0.0;
     double peak_plate_ = 0.0; ///< the plate's height at the end of the hold [m]
+    BinderDistribution binder_;
+    BondingReport bonding_;
+    std::size_t broken_at_peak_ = 0; ///< bonds broken by the end of the hold
 };
 
 CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
@@ -132,8 +140,8 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
       csv_(o.output_dir / "compaction.csv",
            {"time_s", "phase", "plate_height_um", "pressure_MPa", "porosity", "film_top_um",
             "contacts", "max_overlap_rel", "kinetic_energy_J", "dt_s", "inertial_number",
-            "stress_xx_MPa", "stress_yy_MPa", "stress_zz_MPa", "stress_xy_MPa", "stress_xz_MPa",
-            "stress_yz_MPa"}) {
+            "bonds_intact", "bonds_broken", "stress_xx_MPa", "stress_yy_MPa", "stress_zz_MPa",
+            "stress_xy_MPa", "stress_xz_MPa", "stress_yz_MPa"}) {
     ncm_diameter_ = ncm_density_ = 0.0;
     for (const SizeClass& s : film_.recipe.species)
         if (!s.is_cb && s.diameter > ncm_diameter_)
@@ -186,8 +194,22 @@ void CalenderRun::start_pressing() {
                    c_.calender_settle_time, fire_.rms_force(), settle_force_);
     ParticleStore& p = sim_->particles_mut();
     for (std::size_t i = 0; i < p.size(); ++i) p.velocity[i] = p.omega[i] = Vec3{};
+    form_bonds();
     guard_.start(*sim_);
     sim_->set_plate_height(plate);
+}
+
+/// The binder bridges of the settled film as solid bonds (calendering.bond_*; none when
+/// calendering.bond_youngs_modulus = 0).
+void CalenderRun::form_bonds() {
+    if (c_.bond_youngs_modulus == 0.0) return;
+    binder_ = read_binder_distribution(o_.run_dir);
+    bonding_ = drydem::form_bonds(*sim_, calendering_bond_parameters(c_, film_.recipe), binder_,
+                                  c_.bond_gap, c_.bond_probability, c_.seed);
+    log_->info("bonds: {} CB-CB + {} CB-NCM of {} pairs within {:.3g} nm ({} where the binder "
+               "profile asks for more than all); binder {}",
+               bonding_.cb_cb, bonding_.cb_ncm, bonding_.candidates, c_.bond_gap * 1e9,
+               bonding_.saturated, binder_.source);
 }
 
 /// The plate's velocity in the present phase (+z up) [m/s]; the pressure servo of the hold.
@@ -230,6 +252,7 @@ bool CalenderRun::phase_over() const {
 
 void CalenderRun::next_phase() {
     if (phase_ == Phase::hold) {
+        broken_at_peak_ = sim_->bonds().broken();
         r_.peak_thickness = peak_plate_ = sim_->plate_height();
         r_.peak_porosity = porosity_at(r_.peak_thickness);
     }
@@ -277,7 +300,8 @@ void CalenderRun::record() {
     csv_.row({now(), double(int(phase_)), std::isfinite(h) ? h * 1e6 : NAN, pressure_ * 1e-6,
               porosity_at(std::isfinite(h) ? h : top), top * 1e6, double(st.contacts),
               st.max_overlap_rel, sim_->kinetic_energy(), sim_->settings().dt, inertial,
-              s.xx * 1e-6, s.yy * 1e-6, s.zz * 1e-6, s.xy * 1e-6, s.xz * 1e-6, s.yz * 1e-6});
+              double(sim_->bonds().intact()), double(sim_->bonds().broken()), s.xx * 1e-6,
+              s.yy * 1e-6, s.zz * 1e-6, s.xy * 1e-6, s.xz * 1e-6, s.yz * 1e-6});
     if (phase_ == Phase::load) {
         load_pressure_.push_back(pressure_);
         load_porosity_.push_back(porosity_at(h));
@@ -339,6 +363,7 @@ void CalenderRun::finish() {
         if (load_pressure_[k] >= 0.01 * r_.peak_pressure)
             r_.max_inertial_number = std::max(r_.max_inertial_number, load_inertial_[k]);
     write_particles_csv(o_.output_dir / "final.csv", sim_->particles());
+    write_particle_bonds();
     write_frame();
     json s = summary();
     if (r_.completed && c_.analysis_at_end) {
@@ -399,6 +424,7 @@ json CalenderRun::summary() const {
                            {"resistance_MPa", fit.resistance * 1e-6},
                            {"rms", fit.rms},
                            {"points", fit.points}};
+    s["bonds"] = bonds_summary();
     s["max_inertial_number"] = r_.max_inertial_number;
     s["areal_loading_mg_cm2"] = film_.areal_mass * 100.0;
     s["particles"] = {{"ncm", film_.n_ncm}, {"cb", film_.n_cb}};
@@ -413,6 +439,35 @@ json CalenderRun::summary() const {
     return s;
 }
 
+json CalenderRun::bonds_summary() const {
+    if (c_.bond_youngs_modulus == 0.0)
+        return {{"made", 0}, {"note", "no bonds (calendering.bond_youngs_modulus = 0)"}};
+    const std::size_t made = sim_->bonds().bonds.size(), broken = sim_->bonds().broken();
+    return {{"made", made},
+            {"cb_cb", bonding_.cb_cb},
+            {"cb_ncm", bonding_.cb_ncm},
+            {"candidates", bonding_.candidates},
+            {"saturated_candidates", bonding_.saturated},
+            {"binder_profile", binder_.source},
+            {"broken", broken},
+            {"broken_by_peak", broken_at_peak_},
+            {"broken_fraction", made ? double(broken) / double(made) : 0.0},
+            {"per_particle", "particle_bonds.csv"}};
+}
+
+/// particle_bonds.csv: each particle's intact and broken bonds and its contacts at the end.
+void CalenderRun::write_particle_bonds() const {
+    const ParticleStore& p = sim_->particles();
+    const BondCounts b = bond_counts(*sim_);
+    const std::vector<std::int32_t> z = sim_->coordination();
+    write_file_atomically(o_.output_dir / "particle_bonds.csv", [&](std::ostream& os) {
+        os << "id,type,z_um,bonds_intact,bonds_broken,contacts\n";
+        for (std::size_t i = 0; i < p.size(); ++i)
+            os << fmt::format("{},{},{:.6g},{},{},{}\n", p.id[i], p.species[i] + 1,
+                              p.position[i].z * 1e6, b.intact[i], b.broken[i], z[i]);
+    });
+}
+
 /// The structure analysis of the calendered film into analysis/, as a drying run's.
 void CalenderRun::analyse(json& s) const {
     analysis::AnalysisOptions ao = end_of_run_analysis_options(c_);
@@ -424,6 +479,11 @@ void CalenderRun::analyse(json& s) const {
     json add;
     add["analysis"] = "analysis/analysis.json";
     add["coordination_mean"] = ar.coordination.mean();
+    const analysis::Coordination& co = ar.coordination;
+    add["coordination"] = {
+        {"ncm_with_ncm", co.ncm_with_ncm()},    {"ncm_with_cb", co.ncm_with_cb()},
+        {"cb_with_ncm", co.cb_with_ncm()},      {"cb_with_cb", co.cb_with_cb()},
+        {"ncm_on_substrate", co.ncm_substrate}, {"cb_on_substrate", co.cb_substrate}};
     if (ar.transport && ar.transport->solved()) {
         const analysis::TransportLevel& L = ar.transport->reported();
         add["tortuosity_factor_z"] = L.tau_z;

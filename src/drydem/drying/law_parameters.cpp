@@ -143,8 +143,9 @@ ForceField make_drying_force_field(const Config& config, const FilmRecipe& recip
     return ff;
 }
 
-double ncm_yield_pressure(const Config& c, double e_star) {
-    if (c.calender_yield_pressure > 0.0) return c.calender_yield_pressure;
+double contact_yield_pressure(const Config& c, double e_star, bool with_cb) {
+    const double given = with_cb ? c.cb_yield_pressure : c.calender_yield_pressure;
+    if (given > 0.0) return given;
     // δ_y = y 2R* in yield_pressure_at(E*, R*, δ_y) = (2E*/π) sqrt(δ_y/R*): R* cancels.
     return yield_pressure_at(e_star, 1.0, 2.0 * c.calender_yield_displacement);
 }
@@ -168,21 +169,39 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
             mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, c.plate_youngs_modulus,
                               c.plate_poisson_ratio, c.restitution, c.friction, c.rolling_friction);
         HertzMindlinParams& substrate = law<SubstrateContactLaw>(ff.body[std::size_t(i)]);
-        if (!a.is_cb) {
-            plate.yield_pressure = ncm_yield_pressure(c, plate.e_star);
-            substrate.yield_pressure = ncm_yield_pressure(c, substrate.e_star);
-        }
+        plate.yield_pressure = contact_yield_pressure(c, plate.e_star, a.is_cb);
+        substrate.yield_pressure = contact_yield_pressure(c, substrate.e_star, a.is_cb);
         law<PlateContactLaw>(ff.body[std::size_t(i)]) = plate;
         for (int j = 0; j < n; ++j) {
             HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair[std::size_t(i * n + j)]);
-            if (!a.is_cb && !recipe.species[std::size_t(j)].is_cb)
-                hm.yield_pressure = ncm_yield_pressure(c, hm.e_star);
+            const bool with_cb = a.is_cb || recipe.species[std::size_t(j)].is_cb;
+            hm.yield_pressure = contact_yield_pressure(c, hm.e_star, with_cb);
         }
     }
     if (const auto bad = force_field_violations(ff); !bad.empty())
         throw InputError(fmt::format("the calendering laws' parameters are out of range: {}",
                                      fmt::join(bad, "; ")));
     return ff;
+}
+
+BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recipe) {
+    BondNetwork net;
+    const int n = int(recipe.species.size());
+    net.species_count = n;
+    net.params.assign(std::size_t(n * n), {});
+    if (c.bond_youngs_modulus == 0.0) return net;
+    const SolidBondParams bond{
+        c.bond_youngs_modulus, c.bond_youngs_modulus / (2.0 * (1.0 + c.bond_poisson_ratio)),
+        c.bond_radius_ratio,   c.bond_tensile_strength,
+        c.bond_shear_strength, c.bond_damping_ratio};
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            if (recipe.species[std::size_t(i)].is_cb || recipe.species[std::size_t(j)].is_cb)
+                net.params[std::size_t(i * n + j)] = bond;
+    if (const auto bad = net.limit_violations(); !bad.empty())
+        throw InputError(fmt::format("the calendering bonds' parameters are out of range: {}",
+                                     fmt::join(bad, "; ")));
+    return net;
 }
 
 PairReach widest_pair_reach(const ForceField& ff, const FilmRecipe& recipe) {

@@ -6,6 +6,7 @@
 // law declares (forces/law_limits.hpp).
 #pragma once
 #include "drydem/drying/scaling.hpp"
+#include "drydem/engine/bond_network.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -24,12 +25,19 @@ ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
 /// double layer); physical gravity; the plate (calendering.plate_*); every contact of an NCM
 /// particle (with NCM, the substrate, the plate) elastic-plastic, Thornton-Ning with
 /// calendering.yield_pressure, or the p_y at which a pair yields at calendering.yield_displacement
-/// × 2R* (model.md M-2.8, M-2.9). CB contacts stay elastic.
+/// × 2R* (model.md M-2.8, M-2.9); CB contacts yield at calendering.cb_yield_pressure (or the
+/// same yield displacement): the carbon-binder agglomerates crush.
 ForceField make_calendering_force_field(const Config& c, const FilmRecipe& recipe);
 
-/// The limiting contact pressure of an NCM contact of effective modulus E* (calendering.yield_*):
-/// the given p_y, or the one at which it yields at yield_displacement × 2R*; 0 = elastic.
-double ncm_yield_pressure(const Config& c, double e_star);
+/// The solid bonds' parameters in the dry film (calendering.bond_*, model.md M-2.10): CB-CB and
+/// CB-NCM pairs bond, NCM-NCM pairs do not; no bonds at all with calendering.bond_youngs_modulus
+/// = 0. The network comes without bonds: calendering/bonding.hpp makes them.
+BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recipe);
+
+/// The limiting contact pressure of a contact of effective modulus E*: calendering.cb_yield_pressure
+/// for a contact with a CB sphere, calendering.yield_pressure for NCM with NCM or a wall, or else
+/// the p_y at which the pair yields at calendering.yield_displacement × 2R*; 0 = elastic.
+double contact_yield_pressure(const Config& c, double e_star, bool with_cb);
 
 /// The widest pair of the film's species: the largest centre distance r_i + r_j + the pair laws'
 /// range (interaction_range, as the neighbour list reaches) over every species pair [m], and the
