@@ -120,6 +120,20 @@ TEST(CalenderEndToEnd, DisplacementModeReachesTheTargetUnloadsAndKeepsEveryParti
     EXPECT_TRUE(s["settled_film"]["settled"].get<bool>());
     EXPECT_NEAR(s["peak"]["porosity"].get<double>(), r.peak_porosity, 1e-12);
     EXPECT_TRUE(fs::exists(out / "snapshots" / "dump.lammpstrj"));
+    // The bonds: made, counted per particle (each bond twice), the broken ones as compaction.csv's
+    // last row says; the table has a row per particle.
+    const std::size_t made = s["bonds"]["made"].get<std::size_t>(),
+                      broken = s["bonds"]["broken"].get<std::size_t>();
+    EXPECT_GT(made, 0u);
+    EXPECT_EQ(s["bonds"]["cb_cb"].get<std::size_t>() + s["bonds"]["cb_ncm"].get<std::size_t>(),
+              made);
+    const fs::path table = out / "particle_bonds.csv";
+    const std::vector<double> intact = column(table, "bonds_intact"),
+                              gone = column(table, "bonds_broken");
+    EXPECT_EQ(intact.size(), after.particles.size());
+    EXPECT_EQ(std::accumulate(intact.begin(), intact.end(), 0.0), 2.0 * double(made - broken));
+    EXPECT_EQ(std::accumulate(gone.begin(), gone.end(), 0.0), 2.0 * double(broken));
+    EXPECT_EQ(column(out / "compaction.csv", "bonds_broken").back(), double(broken));
 }
 
 TEST(CalenderEndToEnd, PressureModeReachesTheTargetPressure) {
