@@ -148,6 +148,23 @@ TEST(CalenderEndToEnd, PressureModeReachesTheTargetPressure) {
     EXPECT_LT(r.peak_porosity, r.dried_porosity);
 }
 
+TEST(CalenderEndToEnd, LineLoadModeCarriesTheNipPressure) {
+    const Config c = small_film({"calendering.mode=\"line_load\"", "calendering.line_load=1N/mm",
+                                 "calendering.bond_youngs_modulus=0"});
+    const fs::path base = testing_support::temp_dir();
+    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
+    fs::create_directories(out);
+    const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
+    ASSERT_TRUE(r.completed) << r.error;
+    const nlohmann::json s = summary_of(out);
+    const double nip = s["line_load"]["nip_length_um"].get<double>() * 1e-6;
+    const double settled = s["settled_film"]["thickness_um"].get<double>() * 1e-6;
+    // The nip of a 215 mm roll over the thickness the plate took off the settled film.
+    EXPECT_NEAR(nip, std::sqrt(2 * 0.215 * (settled - r.peak_thickness)), 1e-9);
+    EXPECT_GE(r.peak_pressure, 1e3 / nip); // q / l, q = 1 N/mm
+    EXPECT_LT(r.peak_pressure, 1.5e3 / nip);
+}
+
 TEST(CalenderEndToEnd, RefusesAFolderWithoutADriedFilm) {
     const Config c = small_film({});
     const fs::path base = testing_support::temp_dir();

@@ -2,6 +2,7 @@
 // The compaction curve's fit (calendering/compaction_fit.hpp) recovers a known curve, and refuses
 // what no compaction curve is.
 #include "drydem/calendering/compaction_fit.hpp"
+#include "drydem/calendering/nip.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <vector>
@@ -50,3 +51,13 @@ TEST(CompactionFit, RefusesWhatIsNoCompaction) {
 }
 
 } // namespace
+
+// The nip's mean pressure for a line load (calendering/nip.hpp): q / sqrt(2 R Δh).
+TEST(NipPressure, LineLoadOverTheEntryArcOfTheRoll) {
+    // 100 N/mm on a 215 mm roll taking 10 µm off: l = sqrt(2 × 0.215 × 1e-5) = 2.074 mm.
+    EXPECT_NEAR(drydem::nip_pressure(100e3, 0.215, 60e-6, 50e-6), 100e3 / 2.0736441353e-3, 1e-3);
+    EXPECT_TRUE(std::isinf(drydem::nip_pressure(100e3, 0.215, 60e-6, 60e-6)));
+    // The deeper the roll presses, the longer the nip and the lower the mean pressure.
+    EXPECT_GT(drydem::nip_pressure(1e3, 0.2, 60e-6, 55e-6),
+              drydem::nip_pressure(1e3, 0.2, 60e-6, 50e-6));
+}

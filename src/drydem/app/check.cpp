@@ -96,10 +96,14 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
     const double r_ncm = 0.5 * r.species[ncm].diameter,
                  r_cb = 0.5 * r.species[std::size_t(cb)].diameter;
     fmt::print("\nCalendering (drydem calender; docs/calendering.md, model.md M-2.8, M-2.9)\n");
-    fmt::print(
-        "  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode, c.calender_plate_speed,
+    const std::string target =
         c.calender_mode == "pressure" ? fmt::format("{:.4g} MPa", c.calender_target_pressure * 1e-6)
-                                      : fmt::format("porosity {:.3g}", c.calender_target_porosity));
+        : c.calender_mode == "line_load"
+            ? fmt::format("line load {:.4g} N/mm, roll radius {:.4g} mm",
+                          c.calender_line_load * 1e-3, c.calender_roll_radius * 1e3)
+            : fmt::format("porosity {:.3g}", c.calender_target_porosity);
+    fmt::print("  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode,
+               c.calender_plate_speed, target);
     auto yield = [](const char* what, const HertzMindlinParams& p, double r_eff) {
         if (p.yield_pressure <= 0.0) return fmt::print("  {:<22} elastic\n", what);
         fmt::print(

@@ -17,6 +17,7 @@
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/calendering/bonding.hpp"
 #include "drydem/calendering/compaction_fit.hpp"
+#include "drydem/calendering/nip.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/drying/analysis_inputs.hpp"
@@ -70,6 +71,14 @@ private:
     void start_pressing();
     void step();
     [[nodiscard]] double plate_velocity() const;
+    /// The pressure the plate is to carry (pressure mode: calendering.target_pressure; line_load
+    /// mode: the nip's mean pressure at the present gap, nip.hpp).
+    [[nodiscard]] double target_pressure() const {
+        if (c_.calender_mode == "line_load")
+            return nip_pressure(c_.calender_line_load, c_.calender_roll_radius, settled_thickness_,
+                                sim_->plate_height());
+        return c_.calender_target_pressure;
+    }
     [[nodiscard]] bool phase_over() const;
     void next_phase();
     void record();
@@ -218,11 +227,10 @@ double CalenderRun::plate_velocity() const {
     case Phase::load:
         return -speed_;
     case Phase::hold:
-        if (c_.calender_mode != "pressure") return 0.0;
+        if (c_.calender_mode == "displacement") return 0.0;
         // Proportional servo: full speed at a 20 % pressure error, down when below the target.
-        return -speed_ * std::clamp(5.0 * (c_.calender_target_pressure - pressure_) /
-                                        c_.calender_target_pressure,
-                                    -1.0, 1.0);
+        return -speed_ *
+               std::clamp(5.0 * (target_pressure() - pressure_) / target_pressure(), -1.0, 1.0);
     case Phase::unload:
         return speed_;
     default:
@@ -236,8 +244,8 @@ bool CalenderRun::phase_over() const {
     case Phase::settle:
         return fire_.rms_force() <= settle_force_ || t >= c_.calender_settle_time;
     case Phase::load:
-        return c_.calender_mode == "pressure"
-                   ? pressure_ >= c_.calender_target_pressure
+        return c_.calender_mode != "displacement"
+                   ? pressure_ >= target_pressure()
                    : porosity_at(sim_->plate_height()) <= c_.calender_target_porosity;
     case Phase::hold:
         return t >= c_.calender_hold_time;
@@ -407,6 +415,13 @@ json CalenderRun::summary() const {
                          {"tolerance_N", settle_force_},
                          {"fire_stops", fire_.stops()}};
     s["mode"] = c_.calender_mode;
+    if (c_.calender_mode == "line_load")
+        s["line_load"] = {
+            {"line_load_N_mm", c_.calender_line_load * 1e-3},
+            {"roll_radius_mm", c_.calender_roll_radius * 1e3},
+            {"nip_length_um",
+             std::sqrt(2.0 * c_.calender_roll_radius * (settled_thickness_ - peak_plate_)) * 1e6},
+            {"convention", "mean nip pressure q / sqrt(2 R (h0 - h)), h0 the settled film"}};
     s["plate_speed_m_s"] = speed_;
     s["peak"] = {{"pressure_MPa", r_.peak_pressure * 1e-6},
                  {"thickness_um", r_.peak_thickness * 1e6},
