@@ -184,13 +184,7 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
     const Vec3 v_t = perp(v_c, n);
 
     // C-4: rotate the spring onto the current tangent plane, keep its length.
-    const double xi_old2 = norm2(xi);
-    if (xi_old2 > 0.0) {
-        Vec3 xp = perp(xi, n);
-        const double xp2 = norm2(xp);
-        xi = xp2 > 0.0 ? xp * std::sqrt(xi_old2 / xp2) : Vec3{};
-    }
-    xi += v_t * dt;
+    xi = onto_plane(xi, n) + v_t * dt;
 
     Vec3 ft = -s_t * xi - gamma_t * v_t;
     const double f_coulomb = p.friction * out.normal_force; // C-5: contact force only

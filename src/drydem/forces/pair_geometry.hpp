@@ -4,6 +4,7 @@
 // overlap), v_n = (v_i - v_j)·n is positive when the particles approach.
 #pragma once
 #include "drydem/core/vec3.hpp"
+#include <cmath>
 
 namespace drydem {
 
@@ -36,6 +37,16 @@ inline PairGeometry make_pair_geometry(const Vec3& d, double distance, double r_
     g.omega_i = omega_i;
     g.omega_j = omega_j;
     return g;
+}
+
+/// Turns a vector of the old tangent plane onto the plane of the new normal n, keeping its length
+/// (model.md C-4): the contact spring and the bond's shear and bending follow the pair's rotation.
+inline Vec3 onto_plane(const Vec3& v, const Vec3& n) {
+    const double v2 = norm2(v);
+    if (v2 == 0.0) return v;
+    const Vec3 vp = perp(v, n);
+    const double vp2 = norm2(vp);
+    return vp2 > 0.0 ? vp * std::sqrt(v2 / vp2) : Vec3{};
 }
 
 /// Result of a pair law: force on i (j receives -force_i) and the torques on i and j, which differ

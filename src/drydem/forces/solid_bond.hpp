@@ -107,15 +107,6 @@ inline double solid_bond_failure(const BondStress& st, const SolidBondParams& p)
     return std::max(st.tensile, 0.0) / p.tensile_strength + st.shear / p.shear_strength;
 }
 
-/// Turns a vector of the tangent plane onto the plane of the new normal n, keeping its length.
-inline Vec3 onto_plane(const Vec3& v, const Vec3& n) {
-    const double v2 = norm2(v);
-    if (v2 == 0.0) return v;
-    const Vec3 vp = perp(v, n);
-    const double vp2 = norm2(vp);
-    return vp2 > 0.0 ? vp * std::sqrt(v2 / vp2) : Vec3{};
-}
-
 /// Advances the bond by dt, breaks it when the criterion is met, and returns its force and
 /// torques (elastic plus damping; nothing once broken). `damping` receives its resistance.
 inline PairForce solid_bond(const PairGeometry& g, const SolidBondParams& p, SolidBondState& s,
