@@ -18,11 +18,13 @@
 // both ways breaks sooner, as the combined criterion of LAMMPS bond_style bpm/rotational (there
 // on forces and moments). Viscous damping with ratio β_b on every mode:
 //   a_n = 2 β_b sqrt(m* k̄_n A), a_t = 2 β_b sqrt(m* k̄_s A),
-//   a_r = 2 β_b sqrt(I* k̄_n I),  a_w = 2 β_b sqrt(I* k̄_s J),  I* = (2/5) m* r_i r_j
-// (I* is the reduced moment of inertia of two equal spheres, (2/5) m r² / 2, and stays of its
-// order for unequal ones). A bond acts beside the pair laws (a bonded pair that overlaps is also
-// a contact); it is kept in the engine's bond network (engine/bond_network.hpp), not in the
-// neighbour list, because its state outlives any gap until it breaks.
+//   a_r = 2 β_b sqrt(I* k̄_n I),  a_w = 2 β_b sqrt(I* k̄_s J),  I* = (2/5) m* min(r_i, r_j)²
+// (I* is the reduced moment of inertia I_i I_j / (I_i + I_j) of two equal spheres, (2/5) m r²/2,
+// and of a small sphere on a large one, I_small; (2/5) m* r_i r_j would overdamp a CB sphere's
+// rotation on an NCM particle √(r_NCM / r_CB)-fold and lower the explicit step). A bond acts
+// beside the pair laws (a bonded pair that overlaps is also a contact); it is kept in the
+// engine's bond network (engine/bond_network.hpp), not in the neighbour list, because its state
+// outlives any gap until it breaks.
 #pragma once
 #include "drydem/forces/law_limits.hpp"
 #include "drydem/forces/pair_geometry.hpp"
@@ -80,7 +82,8 @@ inline PairResistance solid_bond_stiffness(const PairGeometry& g, const SolidBon
 inline PairResistance solid_bond_resistance(const PairGeometry& g, const SolidBondParams& p,
                                             double rest_length) {
     const PairResistance k = solid_bond_stiffness(g, p, rest_length);
-    const double m = g.m_eff, inertia = 0.4 * g.m_eff * g.r_i * g.r_j;
+    const double r_min = std::min(g.r_i, g.r_j);
+    const double m = g.m_eff, inertia = 0.4 * g.m_eff * r_min * r_min;
     const double two_beta = 2.0 * p.damping_ratio;
     return {two_beta * std::sqrt(m * k.normal),
             two_beta * std::sqrt(m * k.sliding),
