@@ -67,6 +67,7 @@ public:
 
 private:
     [[nodiscard]] ParticleStore dried_film();
+    void refuse_unreachable_target() const;
     [[nodiscard]] std::unique_ptr<Simulation> make_simulation(ParticleStore particles);
     void start_pressing();
     void step();
@@ -155,6 +156,7 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
     for (const SizeClass& s : film_.recipe.species)
         if (!s.is_cb && s.diameter > ncm_diameter_)
             ncm_diameter_ = s.diameter, ncm_density_ = s.density;
+    refuse_unreachable_target();
     std::ofstream(o.output_dir / "config.toml") << to_toml(c);
     fs::create_directories(o.output_dir / "snapshots");
     dump_.open(o.output_dir / "snapshots" / "dump.lammpstrj");
@@ -174,6 +176,32 @@ ParticleStore CalenderRun::dried_film() {
                DRYDEM_VERSION, DRYDEM_GIT_HASH, file.string(), film_.n_ncm, film_.n_cb,
                c_.box_x * 1e6, c_.box_y * 1e6, c_.calender_mode, c_.calender_plate_speed);
     return particles;
+}
+
+/// Before the first step (pressure mode): a target pressure that no packing of these contacts
+/// carries, or a plate so fast that the film cannot follow it quasi-statically.
+void CalenderRun::refuse_unreachable_target() const {
+    if (c_.calender_mode != "pressure") return;
+    const int ncm = 0;
+    const double p_y = law<HertzMindlinLaw>(sim_->forces().pair_params(ncm, ncm)).yield_pressure;
+    // Thornton-Ning caps a contact's mean pressure at p_y; the film's pressure is the contacts'
+    // force over the whole cell, so it stays below p_y.
+    if (p_y > 0.0 && c_.calender_target_pressure >= p_y)
+        throw InputError(fmt::format(
+            "calendering.target_pressure = {:.4g} MPa: the NCM contacts yield at {:.4g} MPa "
+            "(calendering.yield_pressure / yield_displacement), so no packing of them carries "
+            "that pressure; choose a lower target",
+            c_.calender_target_pressure * 1e-6, p_y * 1e-6));
+    // Inertial number at the target, I = (v / h) d sqrt(ρ / p): above 0.1 the film flows (GDR
+    // MiDi's dense regime); the plate-speed check found no trend up to I = 0.03.
+    const double inertial =
+        speed_ / film_top() * ncm_diameter_ * std::sqrt(ncm_density_ / c_.calender_target_pressure);
+    if (inertial > 0.1)
+        throw InputError(fmt::format(
+            "calendering.plate_speed = {:.3g} m/s is too fast to be quasi-static: the inertial "
+            "number at calendering.target_pressure would be {:.2g} (allowed up to 0.1; "
+            "docs/calendering.md); lower the speed to {:.3g} m/s or less",
+            speed_, inertial, speed_ * 0.1 / inertial));
 }
 
 /// The engine on the dried film at rest in the dry state (explicit; the plate not yet there).
