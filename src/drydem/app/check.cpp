@@ -88,6 +88,26 @@ void print_quasi_static_step(const Config& c, const ScaledParameters& s) {
 
 namespace {
 
+/// The solid bonds calendering makes (model.md M-2.10): a CB-CB bond at its contact distance,
+/// its normal spring and the stretch at which it breaks in tension alone.
+void print_bonds(const Config& c, const FilmRecipe& r) {
+    const BondNetwork net = calendering_bond_parameters(c, r);
+    const int cb = r.cb_species();
+    const SolidBondParams& b = net.pair(cb, cb);
+    if (b.youngs_modulus == 0.0)
+        return fmt::print("  bonds: none (calendering.bond_youngs_modulus = 0)\n");
+    const double r_cb = 0.5 * r.species[std::size_t(cb)].diameter;
+    const PairGeometry g =
+        make_pair_geometry({2 * r_cb, 0, 0}, 2 * r_cb, r_cb, r_cb, 1.0, 1.0, {}, {}, {}, {});
+    const PairResistance k = solid_bond_stiffness(g, b, 2 * r_cb);
+    fmt::print("  bonds CB-CB, CB-NCM within {:.3g} nm, p0 {:.3g} x binder profile: E {:.3g} GPa, "
+               "r_b/r {:.3g}, strengths {:.3g} / {:.3g} MPa; a CB-CB bond {:.3g} N/m, breaks in "
+               "tension at {:.3g} nm stretch\n",
+               c.bond_gap * 1e9, c.bond_probability, b.youngs_modulus * 1e-9, b.radius_ratio,
+               b.tensile_strength * 1e-6, b.shear_strength * 1e-6, k.normal,
+               b.tensile_strength / b.youngs_modulus * 2 * r_cb * 1e9);
+}
+
 /// What `drydem calender` will use with this config (docs/calendering.md): the NCM contacts'
 /// limiting pressure and yield overlap per partner, the CB spheres' and the plate's moduli.
 void print_calendering(const Config& c, const FilmRecipe& r) {
@@ -123,6 +143,7 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
         (c.calender_cb_youngs_modulus > 0 ? c.calender_cb_youngs_modulus : c.cb_youngs_modulus) *
             1e-9,
         c.plate_youngs_modulus * 1e-9);
+    print_bonds(c, r);
 }
 
 } // namespace
