@@ -5,6 +5,8 @@
 // re-sorts the particles. Bonds are made once, by whoever sets up the run (calendering: when the
 // film is dry, calendering/bonding.hpp), and only ever break.
 #pragma once
+#include "drydem/core/box.hpp"
+#include "drydem/core/particles.hpp"
 #include "drydem/forces/solid_bond.hpp"
 #include <cstdint>
 #include <string>
@@ -16,6 +18,18 @@ struct Bond {
     std::uint32_t i = 0, j = 0; ///< the particles' storage indices (i ≠ j)
     SolidBondState state;
 };
+
+/// The bonded pair's geometry (minimum image i -> j); with `moving`, its velocities and spins,
+/// else at rest (the stability estimate's operators).
+inline PairGeometry bond_geometry(const Bond& b, const ParticleStore& p, const Box& box,
+                                  bool moving = true) {
+    const Vec3 d = box.minimum_image(p.position[b.i], p.position[b.j]);
+    if (!moving)
+        return make_pair_geometry(d, norm(d), p.radius[b.i], p.radius[b.j], p.mass[b.i],
+                                  p.mass[b.j], {}, {}, {}, {});
+    return make_pair_geometry(d, norm(d), p.radius[b.i], p.radius[b.j], p.mass[b.i], p.mass[b.j],
+                              p.velocity[b.i], p.velocity[b.j], p.omega[b.i], p.omega[b.j]);
+}
 
 struct BondNetwork {
     int species_count = 0;

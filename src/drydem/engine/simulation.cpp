@@ -213,12 +213,9 @@ void Simulation::set_bonds(BondNetwork bonds) {
 }
 
 PairForce Simulation::bond_force(const Bond& b) const {
-    const Vec3 d = box_.minimum_image(p_.position[b.i], p_.position[b.j]);
-    const PairGeometry g =
-        make_pair_geometry(d, norm(d), p_.radius[b.i], p_.radius[b.j], p_.mass[b.i], p_.mass[b.j],
-                           p_.velocity[b.i], p_.velocity[b.j], p_.omega[b.i], p_.omega[b.j]);
     SolidBondState kept = b.state;
-    return solid_bond(g, bonds_.pair(p_.species[b.i], p_.species[b.j]), kept, 0.0);
+    return solid_bond(bond_geometry(b, p_, box_), bonds_.pair(p_.species[b.i], p_.species[b.j]),
+                      kept, 0.0);
 }
 
 // Each bond's force in parallel (its own slot), then added to the particles in bond order: the
@@ -235,11 +232,8 @@ void Simulation::bond_forces() {
             bond_force_[k] = {};
             continue;
         }
-        const Vec3 d = box_.minimum_image(p_.position[b.i], p_.position[b.j]);
-        const PairGeometry g = make_pair_geometry(d, norm(d), p_.radius[b.i], p_.radius[b.j],
-                                                  p_.mass[b.i], p_.mass[b.j], p_.velocity[b.i],
-                                                  p_.velocity[b.j], p_.omega[b.i], p_.omega[b.j]);
-        bond_force_[k] = solid_bond(g, bonds_.pair(p_.species[b.i], p_.species[b.j]), b.state, dt);
+        bond_force_[k] = solid_bond(bond_geometry(b, p_, box_),
+                                    bonds_.pair(p_.species[b.i], p_.species[b.j]), b.state, dt);
     }
     for (std::size_t k = 0; k < nb; ++k) {
         const Bond& b = bonds_.bonds[k];

@@ -135,9 +135,7 @@ GuardOperators assemble_operators(const GuardInputs& in) {
     // a bond's stiffness does not change with its stretch.
     for (const Bond& b : in.bonds.bonds) {
         if (!b.state.intact()) continue;
-        const Vec3 d = in.box.minimum_image(p.position[b.i], p.position[b.j]);
-        const PairGeometry g = make_pair_geometry(d, norm(d), p.radius[b.i], p.radius[b.j],
-                                                  p.mass[b.i], p.mass[b.j], {}, {}, {}, {});
+        const PairGeometry g = bond_geometry(b, p, in.box, false);
         const SolidBondParams& bp = in.bonds.pair(p.species[b.i], p.species[b.j]);
         op.stiffness[0].pairs.push_back(
             {b.i, b.j, g.n, solid_bond_stiffness(g, bp, b.state.rest_length)});
