@@ -124,6 +124,11 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
             : fmt::format("porosity {:.3g}", c.calender_target_porosity);
     fmt::print("  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode,
                c.calender_plate_speed, target);
+    if (c.cb_density_scaling != 1.0)
+        fmt::print(
+            "  CB spheres' mass and moment of inertia x {:.3g} (calendering.cb_density_scaling; "
+            "gravity keeps the physical mass)\n",
+            c.cb_density_scaling);
     auto yield = [](const char* what, const HertzMindlinParams& p, double r_eff) {
         if (p.yield_pressure <= 0.0) return fmt::print("  {:<22} elastic\n", what);
         fmt::print(

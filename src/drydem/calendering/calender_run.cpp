@@ -80,6 +80,10 @@ private:
                                 sim_->plate_height());
         return c_.calender_target_pressure;
     }
+    /// The factor on a sphere's mass and moment of inertia while pressing.
+    [[nodiscard]] double mass_scaling(const SizeClass& s) const {
+        return s.is_cb ? c_.cb_density_scaling : 1.0;
+    }
     [[nodiscard]] bool phase_over() const;
     void next_phase();
     void record();
@@ -122,8 +126,10 @@ private:
     FireRelaxation fire_;
     double settle_force_; ///< the settling's force tolerance [N]
     bool settled_ = false;
-    double speed_;                      ///< calendering.plate_speed [m/s]
-    double ncm_diameter_, ncm_density_; ///< of the largest NCM (inertial number)
+    double speed_; ///< calendering.plate_speed [m/s]
+    /// max over the species of d sqrt(ρ), ρ with calendering.cb_density_scaling: the inertial
+    /// number I = (v / h) d sqrt(ρ / p) of the most inert sphere is this times v / (h sqrt(p)).
+    double inertia_scale_ = 0.0;
     Phase phase_ = Phase::settle;
     double phase_start_ = 0.0, last_record_ = -INFINITY, pressure_ = 0.0;
     CsvSeriesWriter csv_;
@@ -152,10 +158,9 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
             "contacts", "max_overlap_rel", "kinetic_energy_J", "dt_s", "inertial_number",
             "bonds_intact", "bonds_broken", "stress_xx_MPa", "stress_yy_MPa", "stress_zz_MPa",
             "stress_xy_MPa", "stress_xz_MPa", "stress_yz_MPa"}) {
-    ncm_diameter_ = ncm_density_ = 0.0;
     for (const SizeClass& s : film_.recipe.species)
-        if (!s.is_cb && s.diameter > ncm_diameter_)
-            ncm_diameter_ = s.diameter, ncm_density_ = s.density;
+        inertia_scale_ =
+            std::max(inertia_scale_, s.diameter * std::sqrt(s.density * mass_scaling(s)));
     refuse_unreachable_target();
     std::ofstream(o.output_dir / "config.toml") << to_toml(c);
     fs::create_directories(o.output_dir / "snapshots");
@@ -195,7 +200,7 @@ void CalenderRun::refuse_unreachable_target() const {
     // Inertial number at the target, I = (v / h) d sqrt(ρ / p): above 0.1 the film flows (GDR
     // MiDi's dense regime); the plate-speed check found no trend up to I = 0.03.
     const double inertial =
-        speed_ / film_top() * ncm_diameter_ * std::sqrt(ncm_density_ / c_.calender_target_pressure);
+        speed_ / film_top() * inertia_scale_ / std::sqrt(c_.calender_target_pressure);
     if (inertial > 0.1)
         throw InputError(fmt::format(
             "calendering.plate_speed = {:.3g} m/s is too fast to be quasi-static: the inertial "
@@ -208,6 +213,7 @@ void CalenderRun::refuse_unreachable_target() const {
 std::unique_ptr<Simulation> CalenderRun::make_simulation(ParticleStore particles) {
     for (std::size_t i = 0; i < particles.size(); ++i)
         particles.velocity[i] = particles.omega[i] = Vec3{};
+    particles.scale_inertia(std::uint8_t(film_.recipe.cb_species()), c_.cb_density_scaling);
     EngineSettings es;
     es.integrator = Integrator::explicit_verlet;
     es.dt = largest_calender_step(c_);
@@ -328,7 +334,7 @@ void CalenderRun::step() {
 void CalenderRun::record() {
     const double h = sim_->plate_height(), top = film_top();
     const double inertial = phase_ == Phase::load && pressure_ > 0.0
-                                ? speed_ / h * ncm_diameter_ * std::sqrt(ncm_density_ / pressure_)
+                                ? speed_ / h * inertia_scale_ / std::sqrt(pressure_)
                                 : 0.0;
     const StepStats& st = sim_->stats();
     // The film's contact stress over the cell up to the plate (or the film's top without it).
@@ -451,6 +457,7 @@ json CalenderRun::summary() const {
              std::sqrt(2.0 * c_.calender_roll_radius * (settled_thickness_ - peak_plate_)) * 1e6},
             {"convention", "mean nip pressure q / sqrt(2 R (h0 - h)), h0 the settled film"}};
     s["plate_speed_m_s"] = speed_;
+    s["cb_density_scaling"] = c_.cb_density_scaling;
     s["peak"] = {{"pressure_MPa", r_.peak_pressure * 1e-6},
                  {"thickness_um", r_.peak_thickness * 1e6},
                  {"porosity", r_.peak_porosity},

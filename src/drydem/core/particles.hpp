@@ -44,6 +44,18 @@ struct ParticleStore {
         torque.push_back({});
     }
 
+    /// Density scaling: the spheres of `sp` get `factor` times their mass and moment of inertia,
+    /// their density (what gravity and buoyancy read) stays physical. For quasi-static loading
+    /// only: inertia is what it distorts (docs/calendering.md).
+    void scale_inertia(std::uint8_t sp, double factor) {
+        for (std::size_t i = 0; i < size(); ++i)
+            if (species[i] == sp) {
+                mass[i] *= factor;
+                inv_mass[i] /= factor;
+                inv_inertia[i] /= factor;
+            }
+    }
+
     /// Reorders every per-particle array so that new index k holds old index order[k].
     void permute(const std::vector<std::uint32_t>& order);
 };
