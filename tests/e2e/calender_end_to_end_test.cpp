@@ -137,8 +137,11 @@ TEST(CalenderEndToEnd, DisplacementModeReachesTheTargetUnloadsAndKeepsEveryParti
 }
 
 TEST(CalenderEndToEnd, PressureModeReachesTheTargetPressure) {
+    // With the CB spheres' inertia scaled (calendering.cb_density_scaling): the run completes
+    // and says so.
     const Config c =
-        small_film({"calendering.mode=\"pressure\"", "calendering.target_pressure=0.5MPa"});
+        small_film({"calendering.mode=\"pressure\"", "calendering.target_pressure=0.5MPa",
+                    "calendering.cb_density_scaling=4"});
     const fs::path base = testing_support::temp_dir();
     const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
     fs::create_directories(out);
@@ -146,6 +149,9 @@ TEST(CalenderEndToEnd, PressureModeReachesTheTargetPressure) {
     ASSERT_TRUE(r.completed) << r.error;
     EXPECT_GE(r.peak_pressure, 0.5e6);
     EXPECT_LT(r.peak_porosity, r.dried_porosity);
+    EXPECT_EQ(summary_of(out)["cb_density_scaling"].get<double>(), 4.0);
+    EXPECT_NEAR(total_mass(out / "final.csv") / total_mass(run / "final.csv"), 1.0, 1e-12)
+        << "final.csv carries the physical density";
 }
 
 TEST(CalenderEndToEnd, LineLoadModeCarriesTheNipPressure) {
@@ -181,6 +187,11 @@ TEST(CalenderEndToEnd, RefusesAPressureNoContactCarriesOrAPlateTooFast) {
     EXPECT_NE(refusal({"calendering.target_pressure=7GPa"}).find("calendering.target_pressure"),
               std::string::npos);
     EXPECT_NE(refusal({"calendering.target_pressure=0.5MPa", "calendering.plate_speed=100m/s"})
+                  .find("calendering.plate_speed"),
+              std::string::npos);
+    // The scaled CB spheres count in the inertial number: at the test's 2 m/s the NCM's is
+    // ~0.03, a CB sphere 10^4 times heavier has ~25 times that.
+    EXPECT_NE(refusal({"calendering.target_pressure=0.5MPa", "calendering.cb_density_scaling=1e4"})
                   .find("calendering.plate_speed"),
               std::string::npos);
 }

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Issue 31: the calendering runs behind docs/calendering.md "Validation" and "The 20.1 mg/cm2
+# film". One queue of named steps; a step whose folder holds a completed summary.json is skipped,
+# so the queue resumes where it stopped (a stopped calendering run is rerun from its dried film).
+# One run at a time (never two timings at once on 2 cores).
+#
+#   sg_dry          the film of Sangros Gimenez et al. 2019 (examples/sangros2019.toml), dried
+#                   by DryDEM with the paper's scheme, seed SEED (12345)
+#   sg_p<P>         that film pressed to P MPa (pressure mode) and unloaded, P one of the
+#                   article's 19.8 42.7 79.1 159.4; sg_p<P>_v<V> at plate speed V m/s,
+#                   sg_p<P>_s<S> with calendering.cb_density_scaling S, _v<V>_s<S> both
+#   m20_dry         the README main job's film (20.1 mg/cm2, 75 um box, embedded default)
+#   m20_e<E>        that film pressed to the porosity 0.<E> at peak (displacement mode)
+#                   and unloaded; m20_e<E>_v<V>_s<S> as above
+# Defaults of the calendering runs: plate speed V (0.2 m/s), density scaling S (16), the
+# calendering defaults otherwise (docs/configuration.md). Extra --set for every calendering run:
+# CALENDER_SET (space-separated KEY=VALUE).
+#
+# usage: bench/calender_validation.sh STEP...   (then /usr/bin/python3
+#        scripts/calender_validation_report.py OUT)
+# environment: DRYDEM (build/drydem), THREADS (2), OUT (results/calender_validation), SEED
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+drydem=${DRYDEM:-$here/build/drydem}
+threads=${THREADS:-2}
+out=${OUT:-$here/results/calender_validation}
+seed=${SEED:-12345}
+mkdir -p "$out"
+
+completed() { [[ -f $1/summary.json ]] && grep -q '"status": "completed"' "$1/summary.json"; }
+
+dry() {  # $1 folder, rest: drydem run arguments
+  local dir=$1
+  shift
+  [[ -f $dir/final.csv ]] && return
+  local resume=()
+  [[ -d $dir/checkpoint ]] && resume=(--resume)
+  if ((${#resume[@]})); then
+    "$drydem" run --resume "$dir" --threads "$threads" --quiet --no-plots > "$dir.log" 2>&1
+  else
+    rm -rf "$dir"
+    "$drydem" run "$@" --seed "$seed" --threads "$threads" --quiet --no-plots -o "$dir" > "$dir.log" 2>&1
+  fi
+}
+
+press() {  # $1 dried folder, $2 step name (carries _v<V> and _s<S>), rest: --set arguments
+  local dried=$1 step=$2 dir=$out/$2_s$seed
+  shift 2
+  completed "$dir" && return
+  local speed=0.2 scaling=16
+  [[ $step =~ _v([0-9.]+) ]] && speed=${BASH_REMATCH[1]}
+  [[ $step =~ _s([0-9.]+)$ ]] && scaling=${BASH_REMATCH[1]}
+  local extra=()
+  for kv in ${CALENDER_SET:-}; do extra+=(--set "$kv"); done
+  rm -rf "$dir"
+  "$drydem" calender "$dried" -o "$dir" --threads "$threads" --quiet --no-plots \
+    --set calendering.plate_speed="$speed m/s" --set calendering.cb_density_scaling="$scaling" \
+    "$@" "${extra[@]}" > "$dir.log" 2>&1 || echo "== $step: stopped (see $dir.log)" >&2
+}
+
+for step in "$@"; do
+  echo "== $step ($(date -u +%H:%M))" >&2
+  case $step in
+    sg_dry) dry "$out/sg_dry_s$seed" "$here/examples/sangros2019.toml" ;;
+    sg_p*) p=${step#sg_p}; p=${p%%_*}
+      press "$out/sg_dry_s$seed" "$step" --set calendering.mode='"pressure"' \
+        --set calendering.target_pressure="$p MPa" ;;
+    m20_dry) dry "$out/m20_dry_s$seed" ;;
+    m20_e*) e=${step#m20_e}; e=${e%%_*}
+      press "$out/m20_dry_s$seed" "$step" --set calendering.mode='"displacement"' \
+        --set calendering.target_porosity="0.$e" ;;
+    *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
+  esac
+done
