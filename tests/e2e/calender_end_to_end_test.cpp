@@ -196,6 +196,24 @@ TEST(CalenderEndToEnd, RefusesAPressureNoContactCarriesOrAPlateTooFast) {
               std::string::npos);
 }
 
+TEST(CalenderEndToEnd, RefusesAGapBelowTheSpheresOwnHeight) {
+    // Porosity 0.05 leaves a gap below the NCM spheres' and CB envelopes' own volume.
+    const Config c =
+        small_film({"calendering.mode=\"displacement\"", "calendering.target_porosity=0.05"});
+    const fs::path base = testing_support::temp_dir();
+    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
+    fs::create_directories(out);
+    try {
+        (void)run_calendering(c, {run, out, true, false, std::nullopt});
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("calendering.target_porosity"), std::string::npos) << m;
+        EXPECT_NE(m.find("spheres' own height"), std::string::npos) << m;
+    }
+    EXPECT_TRUE(fs::exists(run / "final.csv")) << "the dried run stays untouched";
+}
+
 TEST(CalenderEndToEnd, RefusesAFolderWithoutADriedFilm) {
     const Config c = small_film({});
     const fs::path base = testing_support::temp_dir();

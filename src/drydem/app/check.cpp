@@ -124,6 +124,12 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
             : fmt::format("porosity {:.3g}", c.calender_target_porosity);
     fmt::print("  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode,
                c.calender_plate_speed, target);
+    // The spheres (NCM and CB envelopes) fill the whole gap at this height (docs/calendering.md).
+    const double spheres = (r.ncm_volume + r.cb_envelope_volume) / r.base_area;
+    fmt::print("  spheres' own height {:.4g} um: they fill the gap at porosity {:.3g} (lower "
+               "targets are refused)\n",
+               spheres * 1e6,
+               coating_density(r.dry_mass / r.base_area, spheres, r.solids_density).porosity);
     if (c.cb_density_scaling != 1.0)
         fmt::print(
             "  CB spheres' mass and moment of inertia x {:.3g} (calendering.cb_density_scaling; "

@@ -91,6 +91,10 @@ private:
     [[nodiscard]] double plate_pressure() const {
         return -sim_->body_law_total<PlateContactLaw>().force.z / film_.box.area();
     }
+    /// The spheres' share of the cell below height h: the NCM particles and the CB agglomerates'
+    /// envelopes (with their inner pores) over A h. Above 1 the spheres cannot fit without
+    /// overlapping; a random packing fills ~0.64 of space, a polydisperse one somewhat more.
+    [[nodiscard]] double sphere_fraction_at(double h) const { return sphere_height_ / h; }
     [[nodiscard]] double porosity_at(double h) const {
         return coating_density(film_.areal_mass, h, film_.recipe.solids_density).porosity;
     }
@@ -130,6 +134,7 @@ private:
     /// max over the species of d sqrt(ρ), ρ with calendering.cb_density_scaling: the inertial
     /// number I = (v / h) d sqrt(ρ / p) of the most inert sphere is this times v / (h sqrt(p)).
     double inertia_scale_ = 0.0;
+    double sphere_height_ = 0.0; ///< the spheres' volume over the cell's area [m]
     Phase phase_ = Phase::settle;
     double phase_start_ = 0.0, last_record_ = -INFINITY, pressure_ = 0.0;
     CsvSeriesWriter csv_;
@@ -161,6 +166,8 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
     for (const SizeClass& s : film_.recipe.species)
         inertia_scale_ =
             std::max(inertia_scale_, s.diameter * std::sqrt(s.density * mass_scaling(s)));
+    for (std::size_t i = 0; i < sim_->particles().size(); ++i)
+        sphere_height_ += sphere_volume(sim_->particles().radius[i]) / film_.box.area();
     refuse_unreachable_target();
     std::ofstream(o.output_dir / "config.toml") << to_toml(c);
     fs::create_directories(o.output_dir / "snapshots");
@@ -186,6 +193,21 @@ ParticleStore CalenderRun::dried_film() {
 /// Before the first step (pressure mode): a target pressure that no packing of these contacts
 /// carries, or a plate so fast that the film cannot follow it quasi-statically.
 void CalenderRun::refuse_unreachable_target() const {
+    if (c_.calender_mode == "displacement") {
+        // The gap at the target porosity must hold the spheres' volume: below it only overlap
+        // lenses of the size of whole spheres would make room (docs/calendering.md).
+        const double gap =
+            film_.areal_mass / ((1.0 - c_.calender_target_porosity) * film_.recipe.solids_density);
+        if (sphere_fraction_at(gap) >= 1.0)
+            throw InputError(fmt::format(
+                "calendering.target_porosity = {:.3g}: its gap of {:.4g} um is below the "
+                "spheres' own height of {:.4g} um (NCM particles and CB agglomerates with "
+                "their inner pores, formulation.cb_porosity), so no packing of them reaches it; "
+                "the lowest porosity with the spheres filling the whole gap is {:.3g}",
+                c_.calender_target_porosity, gap * 1e6, sphere_height_ * 1e6,
+                porosity_at(sphere_height_)));
+        return;
+    }
     if (c_.calender_mode != "pressure") return;
     const int ncm = 0;
     const double p_y = law<HertzMindlinLaw>(sim_->forces().pair_params(ncm, ncm)).yield_pressure;
@@ -440,7 +462,9 @@ json CalenderRun::summary() const {
     s["dried_film"] = {{"run", fs::absolute(o_.run_dir).string()},
                        {"thickness_um", r_.dried_thickness * 1e6},
                        {"porosity", r_.dried_porosity},
-                       {"max_overlap_rel", dried_overlap_}};
+                       {"max_overlap_rel", dried_overlap_},
+                       {"sphere_height_um", sphere_height_ * 1e6},
+                       {"porosity_at_sphere_height", porosity_at(sphere_height_)}};
     s["settled_film"] = {{"settled", settled_},
                          {"thickness_um", settled_thickness_ * 1e6},
                          {"porosity", porosity_at(settled_thickness_)},
@@ -458,11 +482,13 @@ json CalenderRun::summary() const {
             {"convention", "mean nip pressure q / sqrt(2 R (h0 - h)), h0 the settled film"}};
     s["plate_speed_m_s"] = speed_;
     s["cb_density_scaling"] = c_.cb_density_scaling;
-    s["peak"] = {{"pressure_MPa", r_.peak_pressure * 1e-6},
-                 {"thickness_um", r_.peak_thickness * 1e6},
-                 {"porosity", r_.peak_porosity},
-                 {"plate_height_um", peak_plate_ * 1e6},
-                 {"porosity_below_plate", porosity_at(peak_plate_)}};
+    s["peak"] = {
+        {"pressure_MPa", r_.peak_pressure * 1e-6},
+        {"thickness_um", r_.peak_thickness * 1e6},
+        {"porosity", r_.peak_porosity},
+        {"plate_height_um", peak_plate_ * 1e6},
+        {"porosity_below_plate", porosity_at(peak_plate_)},
+        {"sphere_fraction", r_.peak_thickness > 0 ? sphere_fraction_at(r_.peak_thickness) : 0.0}};
     s["unloaded"] = {{"thickness_um", r_.unloaded_thickness * 1e6},
                      {"porosity", r_.unloaded_porosity},
                      {"springback_percent", 100.0 * r_.springback}};
