@@ -58,27 +58,46 @@ def fmt(v, spec):
     return '-' if v is None else format(v, spec)
 
 
+def loading_curve(run):
+    """(pressure [MPa], porosity) of the loading rows of compaction.csv."""
+    import csv
+    with open(os.path.join(run, 'compaction.csv')) as f:
+        return [(float(r['pressure_MPa']), float(r['porosity'])) for r in csv.DictReader(f)
+                if r['phase'] == '1']
+
+
+def porosity_at(curve, p):
+    """The loading curve's porosity where the pressure first reaches p (linear between rows)."""
+    for (p0, e0), (p1, e1) in zip(curve, curve[1:]):
+        if p1 >= p > p0:
+            return e0 + (e1 - e0) * (p - p0) / (p1 - p0)
+    return None
+
+
 def sangros(d):
     rows = runs(d, 'sg_p')
     if not rows:
         return
-    print('Sangros Gimenez 2019 film (uncalendered {:.3f} in the article)\n'.format(
-        SANGROS_UNCALENDERED))
-    print('| run | speed [m/s] | CB density x | dried | settled | peak [MPa] | porosity at peak '
-          '| unloaded | article | unloaded - article | springback [%] | bonds broken | max '
-          'overlap | max I | steps | wall [s] |')
-    print('|' + '---|' * 16)
+    print('Sangros Gimenez 2019 film (uncalendered {:.3f} in the article). Loading branch: the '
+          'porosity under the plate as it first carries each pressure; unloaded: after the run '
+          'pressed to its own target.\n'.format(SANGROS_UNCALENDERED))
+    print('| run | speed [m/s] | CB density x | settled | ' +
+          ' | '.join('at {:g} MPa (article {:.3f})'.format(p, e) for p, e in SANGROS.items()) +
+          ' | reached [MPa] | end | unloaded | springback [%] | bonds broken | max overlap | '
+          'max I | steps | wall [s] |')
+    print('|' + '---|' * (13 + len(SANGROS) - 4 + 4))
     for name, r in rows:
-        p = float(re.match(r'sg_p([0-9.]+)', name).group(1))
-        ref = SANGROS.get(p)
-        diff = None if ref is None or r['status'] != 'completed' else r['unloaded'] - ref
-        print('| {} | {:g} | {:g} | {:.3f} | {:.3f} | {:.1f} | {:.3f} | {} | {} | {} | {} | '
-              '{:.0%} | {:.2f} | {:.3f} | {} | {:.0f} |'.format(
-                  name, r['speed'], r['scaling'], r['dried'], r['settled'], r['pressure'],
-                  r['peak'], fmt(r['unloaded'] if r['status'] == 'completed' else None, '.3f'),
-                  fmt(ref, '.3f'), fmt(diff, '+.3f'),
-                  fmt(r['springback'] if r['status'] == 'completed' else None, '.1f'),
-                  r['broken'], r['overlap'], r['inertial'], r['steps'], r['wall']))
+        run = os.path.join(d, name)
+        curve = loading_curve(run)
+        done = r['status'] == 'completed'
+        reached = max((p for p, _ in curve), default=0.0)
+        print('| {} | {:g} | {:g} | {:.3f} | {} | {:.1f} | {} | {} | {} | {:.0%} | {:.2f} | '
+              '{:.3f} | {} | {:.0f} |'.format(
+                  name, r['speed'], r['scaling'], r['settled'],
+                  ' | '.join(fmt(porosity_at(curve, p), '.3f') for p in SANGROS), reached,
+                  'completed' if done else 'stopped', fmt(r['unloaded'] if done else None, '.3f'),
+                  fmt(r['springback'] if done else None, '.1f'), r['broken'], r['overlap'],
+                  r['inertial'], r['steps'], r['wall']))
     print()
 
 

@@ -51,6 +51,17 @@ fs::path dried_run(const Config& c, const fs::path& dir) {
     return dir;
 }
 
+/// A dried run of `c` and an empty output folder beside it, in a fresh temporary folder.
+struct Folders {
+    fs::path run, out;
+};
+Folders folders_for(const Config& c) {
+    const fs::path base = testing_support::temp_dir();
+    Folders f{dried_run(c, base / "run"), base / "calendered"};
+    fs::create_directories(f.out);
+    return f;
+}
+
 double total_mass(const fs::path& file) {
     double m = 0.0;
     for (const ParticleRecord& r : read_particles(file).particles)
@@ -85,9 +96,7 @@ nlohmann::json summary_of(const fs::path& dir) {
 TEST(CalenderEndToEnd, DisplacementModeReachesTheTargetUnloadsAndKeepsEveryParticle) {
     const Config c =
         small_film({"calendering.mode=\"displacement\"", "calendering.target_porosity=0.5"});
-    const fs::path base = testing_support::temp_dir();
-    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
-    fs::create_directories(out);
+    const auto [run, out] = folders_for(c);
     const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
     ASSERT_TRUE(r.completed) << r.error;
     // Mass and particle count are conserved; ids are the run's.
@@ -142,9 +151,7 @@ TEST(CalenderEndToEnd, PressureModeReachesTheTargetPressure) {
     const Config c =
         small_film({"calendering.mode=\"pressure\"", "calendering.target_pressure=0.5MPa",
                     "calendering.cb_density_scaling=4"});
-    const fs::path base = testing_support::temp_dir();
-    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
-    fs::create_directories(out);
+    const auto [run, out] = folders_for(c);
     const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
     ASSERT_TRUE(r.completed) << r.error;
     EXPECT_GE(r.peak_pressure, 0.5e6);
@@ -157,9 +164,7 @@ TEST(CalenderEndToEnd, PressureModeReachesTheTargetPressure) {
 TEST(CalenderEndToEnd, LineLoadModeCarriesTheNipPressure) {
     const Config c = small_film({"calendering.mode=\"line_load\"", "calendering.line_load=1N/mm",
                                  "calendering.bond_youngs_modulus=0"});
-    const fs::path base = testing_support::temp_dir();
-    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
-    fs::create_directories(out);
+    const auto [run, out] = folders_for(c);
     const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
     ASSERT_TRUE(r.completed) << r.error;
     const nlohmann::json s = summary_of(out);
@@ -174,9 +179,7 @@ TEST(CalenderEndToEnd, LineLoadModeCarriesTheNipPressure) {
 TEST(CalenderEndToEnd, RefusesAPressureNoContactCarriesOrAPlateTooFast) {
     auto refusal = [](const std::vector<std::string>& keys) {
         const Config c = small_film(keys);
-        const fs::path base = testing_support::temp_dir();
-        const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
-        fs::create_directories(out);
+        const auto [run, out] = folders_for(c);
         try {
             run_calendering(c, {run, out, true, false, std::nullopt});
         } catch (const InputError& e) {
@@ -200,9 +203,7 @@ TEST(CalenderEndToEnd, RefusesAGapBelowTheSpheresOwnHeight) {
     // Porosity 0.05 leaves a gap below the NCM spheres' and CB envelopes' own volume.
     const Config c =
         small_film({"calendering.mode=\"displacement\"", "calendering.target_porosity=0.05"});
-    const fs::path base = testing_support::temp_dir();
-    const fs::path run = dried_run(c, base / "run"), out = base / "calendered";
-    fs::create_directories(out);
+    const auto [run, out] = folders_for(c);
     try {
         (void)run_calendering(c, {run, out, true, false, std::nullopt});
         FAIL() << "expected InputError";
