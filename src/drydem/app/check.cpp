@@ -125,7 +125,7 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
     fmt::print("  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode,
                c.calender_plate_speed, target);
     // The spheres (NCM and CB envelopes) fill the whole gap at this height (docs/calendering.md).
-    const double spheres = (r.ncm_volume + r.cb_envelope_volume) / r.base_area;
+    const double spheres = r.sphere_height();
     fmt::print("  spheres' own height {:.4g} um: they fill the gap at porosity {:.3g} (lower "
                "targets are refused)\n",
                spheres * 1e6,

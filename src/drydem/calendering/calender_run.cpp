@@ -94,7 +94,13 @@ private:
     /// The spheres' share of the cell below height h: the NCM particles and the CB agglomerates'
     /// envelopes (with their inner pores) over A h. Above 1 the spheres cannot fit without
     /// overlapping; a random packing fills ~0.64 of space, a polydisperse one somewhat more.
-    [[nodiscard]] double sphere_fraction_at(double h) const { return sphere_height_ / h; }
+    [[nodiscard]] double sphere_fraction_at(double h) const {
+        return film_.recipe.sphere_height() / h;
+    }
+    /// I = (v / h) d sqrt(ρ / p) of the most inert sphere at plate height h and pressure p.
+    [[nodiscard]] double inertial_number(double h, double p) const {
+        return speed_ / h * inertia_scale_ / std::sqrt(p);
+    }
     [[nodiscard]] double porosity_at(double h) const {
         return coating_density(film_.areal_mass, h, film_.recipe.solids_density).porosity;
     }
@@ -134,7 +140,6 @@ private:
     /// max over the species of d sqrt(ρ), ρ with calendering.cb_density_scaling: the inertial
     /// number I = (v / h) d sqrt(ρ / p) of the most inert sphere is this times v / (h sqrt(p)).
     double inertia_scale_ = 0.0;
-    double sphere_height_ = 0.0; ///< the spheres' volume over the cell's area [m]
     Phase phase_ = Phase::settle;
     double phase_start_ = 0.0, last_record_ = -INFINITY, pressure_ = 0.0;
     CsvSeriesWriter csv_;
@@ -166,8 +171,6 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
     for (const SizeClass& s : film_.recipe.species)
         inertia_scale_ =
             std::max(inertia_scale_, s.diameter * std::sqrt(s.density * mass_scaling(s)));
-    for (std::size_t i = 0; i < sim_->particles().size(); ++i)
-        sphere_height_ += sphere_volume(sim_->particles().radius[i]) / film_.box.area();
     refuse_unreachable_target();
     std::ofstream(o.output_dir / "config.toml") << to_toml(c);
     fs::create_directories(o.output_dir / "snapshots");
@@ -204,8 +207,8 @@ void CalenderRun::refuse_unreachable_target() const {
                 "spheres' own height of {:.4g} um (NCM particles and CB agglomerates with "
                 "their inner pores, formulation.cb_porosity), so no packing of them reaches it; "
                 "the lowest porosity with the spheres filling the whole gap is {:.3g}",
-                c_.calender_target_porosity, gap * 1e6, sphere_height_ * 1e6,
-                porosity_at(sphere_height_)));
+                c_.calender_target_porosity, gap * 1e6, film_.recipe.sphere_height() * 1e6,
+                porosity_at(film_.recipe.sphere_height())));
         return;
     }
     if (c_.calender_mode != "pressure") return;
@@ -221,8 +224,7 @@ void CalenderRun::refuse_unreachable_target() const {
             c_.calender_target_pressure * 1e-6, p_y * 1e-6));
     // Inertial number at the target, I = (v / h) d sqrt(ρ / p): above 0.1 the film flows (GDR
     // MiDi's dense regime); the plate-speed check found no trend up to I = 0.03.
-    const double inertial =
-        speed_ / film_top() * inertia_scale_ / std::sqrt(c_.calender_target_pressure);
+    const double inertial = inertial_number(film_top(), c_.calender_target_pressure);
     if (inertial > 0.1)
         throw InputError(fmt::format(
             "calendering.plate_speed = {:.3g} m/s is too fast to be quasi-static: the inertial "
@@ -235,7 +237,8 @@ void CalenderRun::refuse_unreachable_target() const {
 std::unique_ptr<Simulation> CalenderRun::make_simulation(ParticleStore particles) {
     for (std::size_t i = 0; i < particles.size(); ++i)
         particles.velocity[i] = particles.omega[i] = Vec3{};
-    particles.scale_inertia(std::uint8_t(film_.recipe.cb_species()), c_.cb_density_scaling);
+    for (std::size_t k = 0; k < film_.recipe.species.size(); ++k)
+        particles.scale_inertia(std::uint8_t(k), mass_scaling(film_.recipe.species[k]));
     EngineSettings es;
     es.integrator = Integrator::explicit_verlet;
     es.dt = largest_calender_step(c_);
@@ -355,9 +358,8 @@ void CalenderRun::step() {
 
 void CalenderRun::record() {
     const double h = sim_->plate_height(), top = film_top();
-    const double inertial = phase_ == Phase::load && pressure_ > 0.0
-                                ? speed_ / h * inertia_scale_ / std::sqrt(pressure_)
-                                : 0.0;
+    const double inertial =
+        phase_ == Phase::load && pressure_ > 0.0 ? inertial_number(h, pressure_) : 0.0;
     const StepStats& st = sim_->stats();
     // The film's contact stress over the cell up to the plate (or the film's top without it).
     const Sym3 s = sim_->contact_stress(film_.box.area() * (std::isfinite(h) ? h : top));
@@ -463,8 +465,8 @@ json CalenderRun::summary() const {
                        {"thickness_um", r_.dried_thickness * 1e6},
                        {"porosity", r_.dried_porosity},
                        {"max_overlap_rel", dried_overlap_},
-                       {"sphere_height_um", sphere_height_ * 1e6},
-                       {"porosity_at_sphere_height", porosity_at(sphere_height_)}};
+                       {"sphere_height_um", film_.recipe.sphere_height() * 1e6},
+                       {"porosity_at_sphere_height", porosity_at(film_.recipe.sphere_height())}};
     s["settled_film"] = {{"settled", settled_},
                          {"thickness_um", settled_thickness_ * 1e6},
                          {"porosity", porosity_at(settled_thickness_)},

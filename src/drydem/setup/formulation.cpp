@@ -77,6 +77,12 @@ double FilmRecipe::largest_diameter() const {
     return d;
 }
 
+double FilmRecipe::sphere_height() const {
+    double v = 0.0;
+    for (const SizeClass& s : species) v += double(s.count) * sphere_volume(0.5 * s.diameter);
+    return v / base_area;
+}
+
 double FilmRecipe::realised_dry_mass() const {
     double m = pvdf_mass;
     for (const SizeClass& s : species) {

@@ -33,6 +33,9 @@ struct FilmRecipe {
     [[nodiscard]] int cb_species() const { return int(species.size()) - 1; }
     [[nodiscard]] std::int64_t particle_count() const;
     [[nodiscard]] double largest_diameter() const;
+    /// The inserted spheres' own volume over A: NCM particles and CB envelopes with their inner
+    /// pores [m]. At this height they would fill the gap (calendering's reachable porosity).
+    [[nodiscard]] double sphere_height() const;
     /// Realised dry mass (C-3): inserted NCM + CB carbon + nominal PVDF [kg].
     [[nodiscard]] double realised_dry_mass() const;
 };
