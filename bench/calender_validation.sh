@@ -12,6 +12,9 @@
 #   m20_dry         the README main job's film (20.1 mg/cm2, 75 um box, embedded default)
 #   m20_e<E>        that film pressed to the porosity 0.<E> at peak (displacement mode)
 #                   and unloaded; m20_e<E>_v<V>_s<S> as above
+#   ..._c<C>        (before _v/_s) with compacting agglomerates: calendering.cb_compaction_pressure
+#                   C MPa; ..._c<C>_m<M> also calendering.cb_minimal_porosity M (docs/model.md
+#                   M-2.11); e.g. sg_p42.7_c120_v0.4_s16
 # Defaults of the calendering runs: plate speed V (0.2 m/s), density scaling S (16), the
 # calendering defaults otherwise (docs/configuration.md). Extra --set for every calendering run:
 # CALENDER_SET (space-separated KEY=VALUE).
@@ -51,6 +54,8 @@ press() {  # $1 dried folder, $2 step name (carries _v<V> and _s<S>), rest: --se
   [[ $step =~ _v([0-9.]+) ]] && speed=${BASH_REMATCH[1]}
   [[ $step =~ _s([0-9.]+)$ ]] && scaling=${BASH_REMATCH[1]}
   local extra=()
+  [[ $step =~ _c([0-9.]+) ]] && extra+=(--set calendering.cb_compaction_pressure="${BASH_REMATCH[1]} MPa")
+  [[ $step =~ _m([0-9.]+) ]] && extra+=(--set calendering.cb_minimal_porosity="${BASH_REMATCH[1]}")
   for kv in ${CALENDER_SET:-}; do extra+=(--set "$kv"); done
   rm -rf "$dir"
   "$drydem" calender "$dried" -o "$dir" --threads "$threads" --quiet --no-plots \

@@ -42,7 +42,11 @@ def row(run, s):
         'overlap': max_overlap(run), 'inertial': s['max_inertial_number'],
         'steps': s['steps'], 'wall': s['wall_time_s'], 'speed': s['plate_speed_m_s'],
         'scaling': s.get('cb_density_scaling', 1.0), 'tau': s.get('tortuosity_factor_z'),
-        'sigma': s.get('electronic_conductivity_S_m'), 'status': s['status']}
+        'sigma': s.get('electronic_conductivity_S_m'), 'status': s['status'],
+        'cb_pc': s.get('cb_compaction', {}).get('pressure_MPa', 0.0),
+        'cb_min': s.get('cb_compaction', {}).get('minimal_porosity'),
+        'cb_peak': s['peak'].get('cb_inner_porosity'),
+        'cb_end': s.get('cb_compaction', {}).get('inner_porosity_end')}
 
 
 def runs(d, prefix):
@@ -101,6 +105,32 @@ def sangros(d):
     print()
 
 
+def compaction(d):
+    """The Sangros film pressed with compacting agglomerates (docs/model.md M-2.11): the unloaded
+    porosity against the article's at the run's target pressure."""
+    rows = [(n, r) for n, r in runs(d, 'sg_p') if r['cb_pc'] > 0]
+    if not rows:
+        return
+    print('Compacting agglomerates on the Sangros Gimenez 2019 film: unloaded porosity against '
+          'the article at the target pressure.\n')
+    print('| run | p_c [MPa] | eps_min | peak [MPa] | at peak | unloaded | article | difference | '
+          'springback [%] | CB inner porosity at peak / end | bonds broken | max overlap | '
+          'steps | wall [s] |')
+    print('|' + '---|' * 14)
+    for name, r in rows:
+        target = float(re.match(r'sg_p([0-9.]+)', name).group(1))
+        article = SANGROS.get(target)
+        done = r['status'] == 'completed'
+        print('| {} | {:g} | {:g} | {:.1f} | {:.3f} | {} | {} | {} | {} | {} / {} | {:.0%} | '
+              '{:.2f} | {} | {:.0f} |'.format(
+                  name, r['cb_pc'], r['cb_min'], r['pressure'], r['peak'],
+                  fmt(r['unloaded'] if done else None, '.3f'), fmt(article, '.3f'),
+                  fmt(r['unloaded'] - article if done and article else None, '+.3f'),
+                  fmt(r['springback'] if done else None, '.1f'), fmt(r['cb_peak'], '.3f'),
+                  fmt(r['cb_end'], '.3f'), r['broken'], r['overlap'], r['steps'], r['wall']))
+    print()
+
+
 def main_film(d):
     rows = runs(d, 'm20_e')
     if not rows:
@@ -127,4 +157,5 @@ def main_film(d):
 
 d = sys.argv[1]
 sangros(d)
+compaction(d)
 main_film(d)

@@ -5,7 +5,9 @@
 // without passing its dried height. The "dried film" is the drying run's own insertion at the wet
 // film's height (a loose film, so that the test does not pay for a drying run); what is tested is
 // the calendering's procedure, not a calendering result.
+#include "drydem/analysis/bulk.hpp"
 #include "drydem/calendering/calender_run.hpp"
+#include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/io/particle_io.hpp"
@@ -213,6 +215,51 @@ TEST(CalenderEndToEnd, RefusesAGapBelowTheSpheresOwnHeight) {
         EXPECT_NE(m.find("spheres' own height"), std::string::npos) << m;
     }
     EXPECT_TRUE(fs::exists(run / "final.csv")) << "the dried run stays untouched";
+}
+
+TEST(CalenderEndToEnd, CompactingAgglomeratesShrinkWithTheirCarbonKept) {
+    // A soft carbon-binder domain (p_c 0.2 MPa) under the plate: the agglomerates compact, never
+    // below ε_min, never reopening; the carbon the analysis counts is the dried film's.
+    const Config c = small_film(
+        {"calendering.mode=\"displacement\"", "calendering.target_porosity=0.5",
+         "calendering.cb_compaction_pressure=0.2MPa", "calendering.cb_minimal_porosity=0.4"});
+    const auto [run, out] = folders_for(c);
+    const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
+    ASSERT_TRUE(r.completed) << r.error;
+    const nlohmann::json s = summary_of(out);
+    const double end = s["cb_compaction"]["inner_porosity_end"].get<double>();
+    EXPECT_LT(end, 0.75 - 1e-3) << "the plate compacted the agglomerates";
+    EXPECT_GT(end, 0.4);
+    EXPECT_LE(s["peak"]["cb_inner_porosity"].get<double>(), 0.75);
+    const std::vector<double> inner = column(out / "compaction.csv", "cb_inner_porosity");
+    for (std::size_t k = 1; k < inner.size(); ++k) EXPECT_LE(inner[k], inner[k - 1] + 1e-12);
+    EXPECT_NEAR(total_mass(out / "final.csv") / total_mass(run / "final.csv"), 1.0, 1e-12);
+    auto carbon = [&c](const fs::path& file) {
+        return analysis::masses(
+                   analysis::structure_from_file(read_particles(file), file_defaults(c)))
+            .cb_carbon;
+    };
+    EXPECT_NEAR(carbon(out / "final.csv") / carbon(run / "final.csv"), 1.0, 1e-9);
+    // Smaller envelopes: the CB spheres' radii fell, the NCM's did not.
+    double before = 0.0, after = 0.0;
+    for (const ParticleRecord& p : read_particles(run / "final.csv").particles)
+        before += p.radius * p.radius * p.radius;
+    for (const ParticleRecord& p : read_particles(out / "final.csv").particles)
+        after += p.radius * p.radius * p.radius;
+    EXPECT_LT(after, before);
+}
+
+TEST(CalenderEndToEnd, RefusesAMinimalPorosityAboveTheDriedOne) {
+    const Config c = small_film(
+        {"calendering.cb_compaction_pressure=5MPa", "calendering.cb_minimal_porosity=0.8"});
+    const auto [run, out] = folders_for(c);
+    try {
+        (void)run_calendering(c, {run, out, true, false, std::nullopt});
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("calendering.cb_minimal_porosity"), std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(CalenderEndToEnd, RefusesAFolderWithoutADriedFilm) {

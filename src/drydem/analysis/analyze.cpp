@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/analysis/amg_solver.hpp"
+#include "drydem/analysis/bulk.hpp"
 #include "drydem/analysis/distance_transform.hpp"
 #include "drydem/analysis/pore_size.hpp"
 #include "drydem/core/error.hpp"
@@ -195,8 +196,13 @@ void voxel_pipeline(AnalysisResult& r, const Structure& s, const AnalysisOptions
         r.voxel_porosity = double(counts[0]) / double(n);
         r.voxel_ncm_fraction = double(counts[1]) / double(n);
         r.voxel_cb_fraction = double(counts[2]) / double(n);
-        r.porosity_with_cb_pores =
-            r.voxel_porosity + s.formulation.cb_porosity * r.voxel_cb_fraction;
+        // The agglomerates' inner pores, 1 - carbon / envelope over all of them (M-2.11).
+        const Masses m = masses(s);
+        const double inner =
+            m.cb_envelope_volume > 0.0
+                ? 1.0 - m.cb_carbon / (s.formulation.cb_density * m.cb_envelope_volume)
+                : s.formulation.cb_porosity;
+        r.porosity_with_cb_pores = r.voxel_porosity + inner * r.voxel_cb_fraction;
     }
     r.chords = chord_lengths(g, r.pore_top_layer);
     r.seconds.push_back(since(t));

@@ -17,7 +17,7 @@ Masses masses(const Structure& s) {
             m.ncm_volume += v;
         } else {
             // M-1.3: only the carbon of an agglomerate is dry mass; its pores held solvent.
-            m.cb_carbon += (1.0 - f.cb_porosity) * f.cb_density * v;
+            m.cb_carbon += s.cb_solid_fraction(i) * f.cb_density * v;
             m.cb_envelope_volume += v;
         }
     }

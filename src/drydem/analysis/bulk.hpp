@@ -8,7 +8,7 @@ namespace drydem::analysis {
 
 struct Masses {
     double ncm = 0.0;       ///< NCM spheres [kg]
-    double cb_carbon = 0.0; ///< carbon of the CB agglomerates, (1 - ε_CB) ρ_CB V_env [kg]
+    double cb_carbon = 0.0; ///< carbon of the CB agglomerates, Σ (1 - ε_i) ρ_CB V_i [kg]
     double pvdf = 0.0; ///< binder, from the formulation: w_PVDF / (w_NCM + w_CB) (m_NCM + m_CB)
     double ncm_volume = 0.0;         ///< Σ V of NCM spheres [m^3]
     double cb_envelope_volume = 0.0; ///< Σ V of CB spheres [m^3]

@@ -22,15 +22,19 @@ Profiles volume_fraction_profiles(const Structure& s, double dz, double top) {
     Profiles p;
     p.dz = dz;
     const std::size_t n = std::max<std::size_t>(1, std::size_t(std::ceil(top / dz - 1e-9)));
-    std::vector<double> v_ncm(n, 0.0), v_cb(n, 0.0);
+    std::vector<double> v_ncm(n, 0.0), v_cb(n, 0.0), v_carbon(n, 0.0);
     for (std::size_t i = 0; i < s.size(); ++i) {
         const double zc = s.position[i].z, r = s.radius[i];
         const long k0 = std::max(0L, long(std::floor((zc - r) / dz)));
         const long k1 = std::min(long(n) - 1, long(std::floor((zc + r) / dz)));
-        auto& v = s.phase[i] == Phase::ncm ? v_ncm : v_cb;
+        const bool ncm = s.phase[i] == Phase::ncm;
+        auto& v = ncm ? v_ncm : v_cb;
+        const double carbon = ncm ? 0.0 : s.cb_solid_fraction(i);
         for (long k = k0; k <= k1; ++k) {
             const double a = double(k) * dz, b = std::min(top, double(k + 1) * dz);
-            v[std::size_t(k)] += sphere_slab_volume(zc, r, a, b);
+            const double slab = sphere_slab_volume(zc, r, a, b);
+            v[std::size_t(k)] += slab;
+            v_carbon[std::size_t(k)] += carbon * slab;
         }
     }
     const Formulation& f = s.formulation;
@@ -43,7 +47,7 @@ Profiles volume_fraction_profiles(const Structure& s, double dz, double top) {
         const double a = double(k) * dz, b = std::min(top, double(k + 1) * dz);
         const double vol = s.box.area() * (b - a);
         const double ncm = v_ncm[k] / vol, env = v_cb[k] / vol;
-        const double carbon = (1.0 - f.cb_porosity) * env;
+        const double carbon = v_carbon[k] / vol;
         p.ncm.push_back(ncm);
         p.cb_envelope.push_back(env);
         p.cb_carbon.push_back(carbon);

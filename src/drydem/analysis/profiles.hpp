@@ -15,7 +15,7 @@ struct Profiles {
     double dz = 0.0;                 ///< slab width [m], slabs [k dz, (k+1) dz) from the substrate
     std::vector<double> ncm;         ///< NCM volume fraction
     std::vector<double> cb_envelope; ///< CB agglomerate envelope volume fraction
-    std::vector<double> cb_carbon;   ///< carbon only: (1 - ε_CB) × envelope
+    std::vector<double> cb_carbon;   ///< carbon only: Σ (1 - ε_i) × envelope
     std::vector<double> cbd;         ///< carbon + binder, binder inside the agglomerates (M-8.4)
     std::vector<double> pore;        ///< 1 - NCM - CB envelope (pores between the spheres)
     std::vector<double> pore_total;  ///< 1 - NCM - carbon - binder (incl. the pores inside CB)

@@ -2,6 +2,7 @@
 #include "drydem/analysis/structure.hpp"
 #include "drydem/setup/solids.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/forces/agglomerate_compaction.hpp"
 #include <fmt/format.h>
 #include <cmath>
 
@@ -10,6 +11,12 @@ namespace drydem::analysis {
 double Formulation::solids_density() const {
     return drydem::solids_density(ncm_mass_fraction, ncm_density, pvdf_mass_fraction, pvdf_density,
                                   cb_mass_fraction, cb_density);
+}
+
+double Structure::cb_solid_fraction(std::size_t i) const {
+    const Formulation& f = formulation;
+    if (!(f.cb_agglomerate_density > 0.0)) return 1.0 - f.cb_porosity;
+    return 1.0 - agglomerate_porosity(f.cb_porosity, density[i], f.cb_agglomerate_density);
 }
 
 void Structure::add(const Vec3& x, double r, Phase ph, double rho) {
@@ -41,7 +48,9 @@ Structure structure_from_file(const ParticleFile& file, const FileDefaults& d,
         x.y -= file.ylo.value_or(0.0);
         s.box.wrap(x);
         const Phase ph = r.type == cb_type ? Phase::cb : Phase::ncm;
-        s.add(x, r.radius, ph, std::isnan(r.density) ? d.formulation.ncm_density : r.density);
+        const double nominal =
+            ph == Phase::cb ? d.formulation.cb_agglomerate_density : d.formulation.ncm_density;
+        s.add(x, r.radius, ph, std::isnan(r.density) ? nominal : r.density);
     }
     if (s.size() == 0) throw InputError("the particle file has no particles");
     return s;

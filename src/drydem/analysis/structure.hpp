@@ -18,23 +18,30 @@ enum class Phase : std::uint8_t { ncm = 1, cb = 2 }; ///< = voxel labels (0 = po
 /// the run configuration's, declared once (io/config_keys.def); drying/analysis_inputs.hpp fills
 /// this from a config, and a structure without it reports no masses (NaN), never invented ones.
 struct Formulation {
-    double ncm_density{};  ///< [kg/m^3], used where the file has no density
-    double cb_density{};   ///< carbon [kg/m^3]
-    double cb_porosity{};  ///< ε_CB: carbon fraction of an agglomerate is 1 - ε_CB
+    double ncm_density{}; ///< [kg/m^3], used where the file has no density
+    double cb_density{};  ///< carbon [kg/m^3]
+    double cb_porosity{}; ///< ε_CB: carbon fraction of an agglomerate as dried is 1 - ε_CB
+    /// ρ_0 of an agglomerate as dried (carbon + pore solvent, M-1.3): a CB sphere's density in the
+    /// file over ρ_0 is how far calendering compacted it (M-2.11)
+    double cb_agglomerate_density{};
     double pvdf_density{}; ///< [kg/m^3]
     double ncm_mass_fraction{}, cb_mass_fraction{}, pvdf_mass_fraction{};
     [[nodiscard]] double solids_density() const; ///< ρ_s, Eq. 4
 };
 
 struct Structure {
-    Box box;                     ///< periodic x-y lengths
-    std::vector<Vec3> position;  ///< [m], x and y wrapped into [0, l)
-    std::vector<double> radius;  ///< [m]
-    std::vector<double> density; ///< [kg/m^3] of NCM spheres (file or formulation); unused for CB
+    Box box;                    ///< periodic x-y lengths
+    std::vector<Vec3> position; ///< [m], x and y wrapped into [0, l)
+    std::vector<double> radius; ///< [m]
+    /// [kg/m^3] (file or formulation): NCM particles' own; CB agglomerates' (ρ_0 as dried, more
+    /// where calendering compacted them)
+    std::vector<double> density;
     std::vector<Phase> phase;
     Formulation formulation;
 
     [[nodiscard]] std::size_t size() const { return position.size(); }
+    /// The carbon's share of CB sphere i's envelope, 1 - ε_i (M-2.11: from its density).
+    [[nodiscard]] double cb_solid_fraction(std::size_t i) const;
     void add(const Vec3& x, double r, Phase ph, double rho = 0.0);
 };
 
@@ -54,7 +61,8 @@ struct FileDefaults {
 };
 
 /// The structure of a particle file. The periodic box is the file's where it has one, else the
-/// defaults'; a particle without a density gets the NCM density. Particles are wrapped into the
+/// defaults'; a particle without a density gets the formulation's (NCM, or an agglomerate as
+/// dried). Particles are wrapped into the
 /// box. InputError for a type the rule does not know or a particle outside the base.
 [[nodiscard]] Structure structure_from_file(const ParticleFile& file, const FileDefaults& d,
                                             const PhaseRule& rule = {});

@@ -124,11 +124,19 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
             : fmt::format("porosity {:.3g}", c.calender_target_porosity);
     fmt::print("  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode,
                c.calender_plate_speed, target);
-    // The spheres (NCM and CB envelopes) fill the whole gap at this height (docs/calendering.md).
-    const double spheres = r.sphere_height();
-    fmt::print("  spheres' own height {:.4g} um: they fill the gap at porosity {:.3g} (lower "
+    // The spheres (NCM and CB envelopes) fill the whole gap at this height (docs/calendering.md);
+    // compacting agglomerates lower it to their densest state (model.md M-2.11).
+    const AgglomerateCompactionParams cbd = agglomerate_compaction(c);
+    const double spheres =
+        cbd.compacts() ? r.sphere_height(cbd.minimal_porosity) : r.sphere_height();
+    if (cbd.compacts())
+        fmt::print("  CB agglomerates compact: inner porosity {:.3g} + ({:.3g} - {:.3g}) "
+                   "exp(-sigma / {:.4g} MPa), as dried their own height {:.4g} um\n",
+                   cbd.minimal_porosity, cbd.initial_porosity, cbd.minimal_porosity,
+                   cbd.pressure * 1e-6, r.sphere_height() * 1e6);
+    fmt::print("  spheres' own height {:.4g} um{}: they fill the gap at porosity {:.3g} (lower "
                "targets are refused)\n",
-               spheres * 1e6,
+               spheres * 1e6, cbd.compacts() ? " (agglomerates at their densest)" : "",
                coating_density(r.dry_mass / r.base_area, spheres, r.solids_density).porosity);
     if (c.cb_density_scaling != 1.0)
         fmt::print(

@@ -12,6 +12,8 @@
 //   5. unload: the plate moves up until it carries nothing and clears the film; it is removed.
 //   6. relax: calendering.relaxation without the plate, then the film is measured (springback).
 //   7. end: final.csv, summary.json with the fitted compaction curve, the structure analysis.
+// From the load on, every kCompactionEvery steps the CB agglomerates compact under their mean
+// stress (calendering.cb_compaction_pressure, model.md M-2.11).
 // A row of compaction.csv every calendering.record_every of plate travel.
 #include "drydem/calendering/calender_run.hpp"
 #include "drydem/analysis/analyze.hpp"
@@ -55,6 +57,11 @@ constexpr const char* phase_name(Phase p) {
     return names[int(p)];
 }
 
+/// Steps between two updates of the agglomerates' compaction: the plate travels a few nm
+/// (0.2 m/s × 20 × ~7e-10 s = 3 nm), a ten-thousandth of a film, between them, and the mean
+/// stress pass costs about one pair-force evaluation.
+constexpr std::int64_t kCompactionEvery = 20;
+
 /// The largest step of the calendering run: calendering.time_step, or 1e-9 s.
 double largest_calender_step(const Config& c) {
     return c.calender_time_step > 0.0 ? c.calender_time_step : 1e-9;
@@ -95,8 +102,24 @@ private:
     /// envelopes (with their inner pores) over A h. Above 1 the spheres cannot fit without
     /// overlapping; a random packing fills ~0.64 of space, a polydisperse one somewhat more.
     [[nodiscard]] double sphere_fraction_at(double h) const {
-        return film_.recipe.sphere_height() / h;
+        double v = 0.0;
+        for (double r : sim_->particles().radius) v += sphere_volume(r);
+        return v / (film_.box.area() * h);
     }
+    /// The lowest height the spheres can fill: the agglomerates at calendering.cb_minimal_porosity
+    /// where they compact, as dried where they do not.
+    [[nodiscard]] double densest_sphere_height() const {
+        return compaction_.compacts() ? film_.recipe.sphere_height(compaction_.minimal_porosity)
+                                      : film_.recipe.sphere_height();
+    }
+    /// The inner porosity of CB sphere i (M-2.11: from its density, the mass kept).
+    [[nodiscard]] double inner_porosity(std::size_t i) const {
+        return agglomerate_porosity(film_.recipe.cb_porosity, sim_->particles().density[i],
+                                    film_.recipe.cb_effective_density);
+    }
+    /// The CB agglomerates' inner porosity over all of them: 1 - carbon / envelope volume.
+    [[nodiscard]] double cb_inner_porosity() const;
+    void compact_agglomerates();
     /// I = (v / h) d sqrt(ρ / p) of the most inert sphere at plate height h and pressure p.
     [[nodiscard]] double inertial_number(double h, double p) const {
         return speed_ / h * inertia_scale_ / std::sqrt(p);
@@ -137,6 +160,7 @@ private:
     double settle_force_; ///< the settling's force tolerance [N]
     bool settled_ = false;
     double speed_; ///< calendering.plate_speed [m/s]
+    AgglomerateCompactionParams compaction_;
     /// max over the species of d sqrt(ρ), ρ with calendering.cb_density_scaling: the inertial
     /// number I = (v / h) d sqrt(ρ / p) of the most inert sphere is this times v / (h sqrt(p)).
     double inertia_scale_ = 0.0;
@@ -149,6 +173,7 @@ private:
     CalenderResult r_;
     double settled_thickness_ = 0.0, settled_overlap_ = 0.0, dried_overlap_ = 0.0;
     double peak_plate_ = 0.0; ///< the plate's height at the end of the hold [m]
+    double peak_sphere_fraction_ = 0.0, peak_cb_porosity_ = 0.0; ///< at the end of the hold
     BinderDistribution binder_;
     BondingReport bonding_;
     std::size_t broken_at_peak_ = 0; ///< bonds broken by the end of the hold
@@ -162,12 +187,17 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
       fire_(1.8 * largest_calender_step(c)),
       settle_force_(c.calender_settle_tolerance * film_.box.area() /
                     double(std::max<std::size_t>(sim_->particles().size(), 1))),
-      speed_(c.calender_plate_speed),
-      csv_(o.output_dir / "compaction.csv",
-           {"time_s", "phase", "plate_height_um", "pressure_MPa", "porosity", "film_top_um",
-            "contacts", "max_overlap_rel", "kinetic_energy_J", "dt_s", "inertial_number",
-            "bonds_intact", "bonds_broken", "stress_xx_MPa", "stress_yy_MPa", "stress_zz_MPa",
-            "stress_xy_MPa", "stress_xz_MPa", "stress_yz_MPa"}) {
+      speed_(c.calender_plate_speed), compaction_(agglomerate_compaction(c)),
+      csv_(o.output_dir / "compaction.csv", {"time_s",           "phase",
+                                             "plate_height_um",  "pressure_MPa",
+                                             "porosity",         "film_top_um",
+                                             "contacts",         "max_overlap_rel",
+                                             "kinetic_energy_J", "dt_s",
+                                             "inertial_number",  "bonds_intact",
+                                             "bonds_broken",     "cb_inner_porosity",
+                                             "stress_xx_MPa",    "stress_yy_MPa",
+                                             "stress_zz_MPa",    "stress_xy_MPa",
+                                             "stress_xz_MPa",    "stress_yz_MPa"}) {
     for (const SizeClass& s : film_.recipe.species)
         inertia_scale_ =
             std::max(inertia_scale_, s.diameter * std::sqrt(s.density * mass_scaling(s)));
@@ -196,19 +226,26 @@ ParticleStore CalenderRun::dried_film() {
 /// Before the first step (pressure mode): a target pressure that no packing of these contacts
 /// carries, or a plate so fast that the film cannot follow it quasi-statically.
 void CalenderRun::refuse_unreachable_target() const {
+    if (compaction_.compacts() && compaction_.minimal_porosity >= compaction_.initial_porosity)
+        throw InputError(fmt::format(
+            "calendering.cb_minimal_porosity = {:.3g} must be below formulation.cb_porosity = "
+            "{:.3g}: the agglomerates compact from their dried inner porosity down to it",
+            compaction_.minimal_porosity, compaction_.initial_porosity));
     if (c_.calender_mode == "displacement") {
         // The gap at the target porosity must hold the spheres' volume: below it only overlap
         // lenses of the size of whole spheres would make room (docs/calendering.md).
         const double gap =
             film_.areal_mass / ((1.0 - c_.calender_target_porosity) * film_.recipe.solids_density);
-        if (sphere_fraction_at(gap) >= 1.0)
+        const double spheres = densest_sphere_height();
+        if (gap <= spheres)
             throw InputError(fmt::format(
                 "calendering.target_porosity = {:.3g}: its gap of {:.4g} um is below the "
                 "spheres' own height of {:.4g} um (NCM particles and CB agglomerates with "
-                "their inner pores, formulation.cb_porosity), so no packing of them reaches it; "
-                "the lowest porosity with the spheres filling the whole gap is {:.3g}",
-                c_.calender_target_porosity, gap * 1e6, film_.recipe.sphere_height() * 1e6,
-                porosity_at(film_.recipe.sphere_height())));
+                "their inner pores, formulation.cb_porosity, compacted at most to "
+                "calendering.cb_minimal_porosity where calendering.cb_compaction_pressure > 0), "
+                "so no packing of them reaches it; the lowest porosity with the spheres filling "
+                "the whole gap is {:.3g}",
+                c_.calender_target_porosity, gap * 1e6, spheres * 1e6, porosity_at(spheres)));
         return;
     }
     if (c_.calender_mode != "pressure") return;
@@ -322,6 +359,8 @@ void CalenderRun::next_phase() {
         broken_at_peak_ = sim_->bonds().broken();
         r_.peak_thickness = peak_plate_ = sim_->plate_height();
         r_.peak_porosity = porosity_at(r_.peak_thickness);
+        peak_sphere_fraction_ = sphere_fraction_at(r_.peak_thickness);
+        peak_cb_porosity_ = cb_inner_porosity();
     }
     if (phase_ == Phase::unload) sim_->set_plate_height(INFINITY); // the plate is gone
     if (phase_ == Phase::settle) start_pressing();
@@ -339,6 +378,8 @@ void CalenderRun::step() {
         fire_.after_step(*sim_);
     else
         guard_.after_step(*sim_);
+    if (compaction_.compacts() && phase_ != Phase::settle && steps() % kCompactionEvery == 0)
+        compact_agglomerates();
     const bool plate = phase_ == Phase::load || phase_ == Phase::hold || phase_ == Phase::unload;
     if (plate) {
         sim_->set_plate_height(sim_->plate_height() + plate_velocity() * sim_->settings().dt);
@@ -363,11 +404,26 @@ void CalenderRun::record() {
     const StepStats& st = sim_->stats();
     // The film's contact stress over the cell up to the plate (or the film's top without it).
     const Sym3 s = sim_->contact_stress(film_.box.area() * (std::isfinite(h) ? h : top));
-    csv_.row({now(), double(int(phase_)), std::isfinite(h) ? h * 1e6 : NAN, pressure_ * 1e-6,
-              porosity_at(std::isfinite(h) ? h : top), top * 1e6, double(st.contacts),
-              st.max_overlap_rel, sim_->kinetic_energy(), sim_->settings().dt, inertial,
-              double(sim_->bonds().intact()), double(sim_->bonds().broken()), s.xx * 1e-6,
-              s.yy * 1e-6, s.zz * 1e-6, s.xy * 1e-6, s.xz * 1e-6, s.yz * 1e-6});
+    csv_.row({now(),
+              double(int(phase_)),
+              std::isfinite(h) ? h * 1e6 : NAN,
+              pressure_ * 1e-6,
+              porosity_at(std::isfinite(h) ? h : top),
+              top * 1e6,
+              double(st.contacts),
+              st.max_overlap_rel,
+              sim_->kinetic_energy(),
+              sim_->settings().dt,
+              inertial,
+              double(sim_->bonds().intact()),
+              double(sim_->bonds().broken()),
+              cb_inner_porosity(),
+              s.xx * 1e-6,
+              s.yy * 1e-6,
+              s.zz * 1e-6,
+              s.xy * 1e-6,
+              s.xz * 1e-6,
+              s.yz * 1e-6});
     if (phase_ == Phase::load) {
         load_pressure_.push_back(pressure_);
         load_porosity_.push_back(porosity_at(h));
@@ -380,6 +436,32 @@ void CalenderRun::record() {
                                  phase_name(phase_), now() * 1e6,
                                  std::isfinite(h) ? h * 1e6 : top * 1e6, pressure_ * 1e-6,
                                  porosity_at(std::isfinite(h) ? h : top)));
+}
+
+double CalenderRun::cb_inner_porosity() const {
+    const ParticleStore& p = sim_->particles();
+    double carbon = 0.0, envelope = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (film_.recipe.species[p.species[i]].is_cb) {
+            const double v = sphere_volume(p.radius[i]);
+            carbon += (1.0 - inner_porosity(i)) * v;
+            envelope += v;
+        }
+    return envelope > 0.0 ? 1.0 - carbon / envelope : 0.0;
+}
+
+/// M-2.11: each agglomerate's inner porosity follows its mean stress down, never up; the
+/// envelope shrinks with the solid kept. Shrinking only lowers overlaps, so the neighbour list
+/// (built for the larger spheres) stays valid.
+void CalenderRun::compact_agglomerates() {
+    const std::vector<double> sigma = sim_->particle_mean_stress();
+    ParticleStore& p = sim_->particles_mut();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!film_.recipe.species[p.species[i]].is_cb) continue;
+        const double e = inner_porosity(i);
+        const double compacted = compacted_porosity(compaction_, e, sigma[i]);
+        if (compacted < e) p.resize_sphere(i, compacted_radius(p.radius[i], e, compacted));
+    }
 }
 
 void CalenderRun::write_frame() {
@@ -484,13 +566,21 @@ json CalenderRun::summary() const {
             {"convention", "mean nip pressure q / sqrt(2 R (h0 - h)), h0 the settled film"}};
     s["plate_speed_m_s"] = speed_;
     s["cb_density_scaling"] = c_.cb_density_scaling;
-    s["peak"] = {
-        {"pressure_MPa", r_.peak_pressure * 1e-6},
-        {"thickness_um", r_.peak_thickness * 1e6},
-        {"porosity", r_.peak_porosity},
-        {"plate_height_um", peak_plate_ * 1e6},
-        {"porosity_below_plate", porosity_at(peak_plate_)},
-        {"sphere_fraction", r_.peak_thickness > 0 ? sphere_fraction_at(r_.peak_thickness) : 0.0}};
+    s["cb_compaction"] = {
+        {"pressure_MPa", compaction_.pressure * 1e-6},
+        {"initial_porosity", compaction_.initial_porosity},
+        {"minimal_porosity",
+         compaction_.compacts() ? compaction_.minimal_porosity : compaction_.initial_porosity},
+        {"inner_porosity_end", cb_inner_porosity()},
+        {"densest_sphere_height_um", densest_sphere_height() * 1e6},
+        {"porosity_at_densest_sphere_height", porosity_at(densest_sphere_height())}};
+    s["peak"] = {{"pressure_MPa", r_.peak_pressure * 1e-6},
+                 {"thickness_um", r_.peak_thickness * 1e6},
+                 {"porosity", r_.peak_porosity},
+                 {"plate_height_um", peak_plate_ * 1e6},
+                 {"porosity_below_plate", porosity_at(peak_plate_)},
+                 {"sphere_fraction", peak_sphere_fraction_},
+                 {"cb_inner_porosity", peak_cb_porosity_}};
     s["unloaded"] = {{"thickness_um", r_.unloaded_thickness * 1e6},
                      {"porosity", r_.unloaded_porosity},
                      {"springback_percent", 100.0 * r_.springback}};

@@ -56,6 +56,15 @@ struct ParticleStore {
             }
     }
 
+    /// Sphere i takes the radius r with its mass kept (a compacting agglomerate): its density
+    /// rises as 1/r³, its moment of inertia (2/5) m r² falls.
+    void resize_sphere(std::size_t i, double r) {
+        const double ratio = radius[i] / r;
+        density[i] *= ratio * ratio * ratio;
+        radius[i] = r;
+        inv_inertia[i] = 1.0 / (0.4 * mass[i] * r * r);
+    }
+
     /// Reorders every per-particle array so that new index k holds old index order[k].
     void permute(const std::vector<std::uint32_t>& order);
 };

@@ -12,4 +12,10 @@ namespace drydem {
     return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
 }
 
+/// A porous agglomerate's envelope volume when its inner porosity goes from `from` to `to` with
+/// its solid kept (M-1.3: V_env = V_solid / (1 - ε)), as a ratio V_to / V_from.
+[[nodiscard]] constexpr double envelope_ratio(double from, double to) {
+    return (1.0 - from) / (1.0 - to);
+}
+
 } // namespace drydem

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/analysis_inputs.hpp"
+#include "drydem/setup/formulation.hpp"
 
 namespace drydem {
 
@@ -8,6 +9,7 @@ analysis::Formulation analysis_formulation(const Config& c) {
     f.ncm_density = c.ncm_density;
     f.cb_density = c.cb_density;
     f.cb_porosity = c.cb_porosity;
+    f.cb_agglomerate_density = cb_agglomerate_density(c);
     f.pvdf_density = c.pvdf_density;
     f.ncm_mass_fraction = c.ncm_mass_fraction;
     f.cb_mass_fraction = c.cb_mass_fraction;

@@ -184,6 +184,10 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
     return ff;
 }
 
+AgglomerateCompactionParams agglomerate_compaction(const Config& c) {
+    return {c.cb_porosity, c.cb_minimal_porosity, c.cb_compaction_pressure};
+}
+
 BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recipe) {
     BondNetwork net;
     const int n = int(recipe.species.size());

@@ -7,6 +7,7 @@
 #pragma once
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/bond_network.hpp"
+#include "drydem/forces/agglomerate_compaction.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -33,6 +34,10 @@ ForceField make_calendering_force_field(const Config& c, const FilmRecipe& recip
 /// CB-NCM pairs bond, NCM-NCM pairs do not; no bonds at all with calendering.bond_youngs_modulus
 /// = 0. The network comes without bonds: calendering/bonding.hpp makes them.
 BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recipe);
+
+/// The carbon-binder agglomerates' compaction in the dry film (calendering.cb_compaction_pressure,
+/// calendering.cb_minimal_porosity; ε_0 = formulation.cb_porosity; model.md M-2.11).
+AgglomerateCompactionParams agglomerate_compaction(const Config& c);
 
 /// The limiting contact pressure of a contact of effective modulus E*: calendering.cb_yield_pressure
 /// for a contact with a CB sphere, calendering.yield_pressure for NCM with NCM or a wall, or else

@@ -83,14 +83,8 @@ std::vector<std::int32_t> Simulation::coordination() const {
     return z;
 }
 
-Sym3 Simulation::contact_stress(double volume) const {
-    Sym3 s;
-    auto add = [&s](const Vec3& f, const Vec3& d) { // -= f ⊗ d, symmetrised
-        s.xx -= f.x * d.x, s.yy -= f.y * d.y, s.zz -= f.z * d.z;
-        s.xy -= 0.5 * (f.x * d.y + f.y * d.x);
-        s.xz -= 0.5 * (f.x * d.z + f.z * d.x);
-        s.yz -= 0.5 * (f.y * d.z + f.z * d.y);
-    };
+template <class PairFn, class WallFn>
+void Simulation::visit_contact_forces(PairFn&& pair, WallFn&& wall) const {
     for (std::size_t i = 0; i < p_.size(); ++i) {
         if (nl_.owners() == p_.size())
             for (std::uint32_t k = nl_.begin(i); k < nl_.end(i); ++k) {
@@ -102,9 +96,10 @@ Sym3 Simulation::contact_stress(double volume) const {
                     d, std::sqrt(dist2), p_.radius[i], p_.radius[j], p_.mass[i], p_.mass[j],
                     p_.velocity[i], p_.velocity[j], p_.omega[i], p_.omega[j]);
                 PairState kept = nl_.state(k);
-                add(pair_interaction(g, ff_.pair_params(p_.species[i], p_.species[j]), kept, 0.0)
-                        .force_i,
-                    d);
+                pair(i, j,
+                     pair_interaction(g, ff_.pair_params(p_.species[i], p_.species[j]), kept, 0.0)
+                         .force_i,
+                     d);
             }
         // The walls: their contact point lies on the plane, straight below or above the centre.
         const BodyGeometry g = body_geometry(i, p_.velocity[i], p_.omega[i], 0.0);
@@ -116,16 +111,47 @@ Sym3 Simulation::contact_stress(double volume) const {
                                        nullptr);
         PlateContactLaw::add_force(g, law<PlateContactLaw>(bp),
                                    BodyLaws::state<PlateContactLaw>(kept), 0.0, plate, nullptr);
-        add(sub.force, Vec3{0.0, 0.0, -p_.position[i].z});
+        wall(i, sub.force, Vec3{0.0, 0.0, -p_.position[i].z});
         if (std::isfinite(plate_height_))
-            add(plate.force, Vec3{0.0, 0.0, plate_height_ - p_.position[i].z});
+            wall(i, plate.force, Vec3{0.0, 0.0, plate_height_ - p_.position[i].z});
     }
     for (const Bond& b : bonds_.bonds)
         if (b.state.intact())
-            add(bond_force(b).force_i, box_.minimum_image(p_.position[b.i], p_.position[b.j]));
+            pair(std::size_t(b.i), std::size_t(b.j), bond_force(b).force_i,
+                 box_.minimum_image(p_.position[b.i], p_.position[b.j]));
+}
+
+Sym3 Simulation::contact_stress(double volume) const {
+    Sym3 s;
+    auto add = [&s](const Vec3& f, const Vec3& d) { // -= f ⊗ d, symmetrised
+        s.xx -= f.x * d.x, s.yy -= f.y * d.y, s.zz -= f.z * d.z;
+        s.xy -= 0.5 * (f.x * d.y + f.y * d.x);
+        s.xz -= 0.5 * (f.x * d.z + f.z * d.x);
+        s.yz -= 0.5 * (f.y * d.z + f.z * d.y);
+    };
+    visit_contact_forces([&](std::size_t, std::size_t, const Vec3& f, const Vec3& d) { add(f, d); },
+                         [&](std::size_t, const Vec3& f, const Vec3& lever) { add(f, lever); });
     const double inv = 1.0 / volume;
     s.xx *= inv, s.yy *= inv, s.zz *= inv, s.xy *= inv, s.xz *= inv, s.yz *= inv;
     return s;
+}
+
+std::vector<double> Simulation::particle_mean_stress() const {
+    std::vector<double> t(p_.size(), 0.0); // -Σ f · (x_c - x), then / 3V
+    visit_contact_forces(
+        [&](std::size_t i, std::size_t j, const Vec3& f, const Vec3& d) {
+            const double dist = norm(d), ri = p_.radius[i], rj = p_.radius[j];
+            // The contact plane of two overlapping spheres (their intersection circle), a_i
+            // from i's centre; for a gap, the same formula splits it by the radii.
+            const double ai =
+                std::clamp((dist * dist + ri * ri - rj * rj) / (2.0 * dist), 0.0, dist);
+            const double fn = dot(f, d) / dist; // f on i along i -> j: < 0 in compression
+            t[i] -= fn * ai;
+            t[j] -= fn * (dist - ai); // j feels -f, its lever is -(dist - a_i) n
+        },
+        [&](std::size_t i, const Vec3& f, const Vec3& lever) { t[i] -= dot(f, lever); });
+    for (std::size_t i = 0; i < p_.size(); ++i) t[i] /= 3.0 * sphere_volume(p_.radius[i]);
+    return t;
 }
 
 EngineState Simulation::state() const {

@@ -154,6 +154,12 @@ public:
     /// point on the substrate or the plate. Over a film between the substrate and a plate in
     /// equilibrium, s_zz is the plate's pressure; V is the caller's (cell area × height).
     [[nodiscard]] Sym3 contact_stress(double volume) const;
+    /// Each particle's mean stress from its contacts and bonds (Love-Weber over its own volume,
+    /// compression positive) [Pa], storage order:
+    ///   σ_i = -(1 / 3V_i) Σ_c f_c · (x_c - x_i)
+    /// x_c on the pair's contact plane (the spheres' intersection circle) or on the wall. The
+    /// same forces as contact_stress: Σ_i 3 σ_i V_i = tr(s) V.
+    [[nodiscard]] std::vector<double> particle_mean_stress() const;
     /// Translational + rotational kinetic energy [J].
     [[nodiscard]] double kinetic_energy() const;
     /// Total linear momentum [kg m/s].
@@ -177,6 +183,11 @@ public:
     void compute_forces();
 
 private:
+    /// Calls pair(i, j, f_i, x_j - x_i) for each listed pair and intact bond with the force on i
+    /// at the present state (nothing advanced), and wall(i, f, x_c - x_i) for the substrate and
+    /// the plate.
+    template <class PairFn, class WallFn>
+    void visit_contact_forces(PairFn&& pair, WallFn&& wall) const;
     void rebuild_neighbors();
     /// Particle forces of particle i into the store (M-9.5), counting substrate contacts.
     void body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap);

@@ -43,8 +43,8 @@ FilmRecipe make_recipe(const Config& c) {
     // M-1.3: CB count from the agglomerate envelope volume, density carbon + pore NMP.
     r.cb_carbon_mass = c.cb_mass_fraction * r.dry_mass;
     r.cb_envelope_volume = r.cb_carbon_mass / (c.cb_density * (1.0 - c.cb_porosity));
-    r.cb_effective_density =
-        (1.0 - c.cb_porosity) * c.cb_density + c.cb_porosity * c.solvent_density;
+    r.cb_effective_density = cb_agglomerate_density(c);
+    r.cb_porosity = c.cb_porosity;
     SizeClass cb;
     cb.diameter = c.cb_diameter;
     cb.density = r.cb_effective_density;
@@ -77,9 +77,15 @@ double FilmRecipe::largest_diameter() const {
     return d;
 }
 
-double FilmRecipe::sphere_height() const {
+double cb_agglomerate_density(const Config& c) {
+    return (1.0 - c.cb_porosity) * c.cb_density + c.cb_porosity * c.solvent_density;
+}
+
+double FilmRecipe::sphere_height(double cb_inner_porosity) const {
     double v = 0.0;
-    for (const SizeClass& s : species) v += double(s.count) * sphere_volume(0.5 * s.diameter);
+    for (const SizeClass& s : species)
+        v += double(s.count) * sphere_volume(0.5 * s.diameter) *
+             (s.is_cb ? envelope_ratio(cb_porosity, cb_inner_porosity) : 1.0);
     return v / base_area;
 }
 
