@@ -7,6 +7,7 @@
 #include "drydem/forces/agglomerate_compaction.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
+#include "drydem/setup/solids.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -57,6 +58,16 @@ TEST(AgglomerateCompaction, InnerPorosityIsReadBackFromTheResizedSpheresDensity)
     EXPECT_NEAR(p.density[0] * sphere_volume(p.radius[0]), m, 1e-12 * m);
     EXPECT_DOUBLE_EQ(1.0 / p.inv_inertia[0], 0.4 * m * p.radius[0] * p.radius[0]);
     EXPECT_NEAR(agglomerate_porosity(0.75, p.density[0], rho0), e2, 1e-12);
+}
+
+TEST(AgglomerateCompaction, BinderFilledPorosityLeavesRoomForTheBinderOnly) {
+    // Equal volumes of binder and carbon: half of the envelope is binder.
+    EXPECT_DOUBLE_EQ(binder_filled_porosity(1.0), 0.5);
+    EXPECT_DOUBLE_EQ(binder_filled_porosity(0.0), 0.0);
+    // The Sangros Gimenez film: 4 % PVDF (1.78 g/cm³) on 6 % carbon (1.66 g/cm³).
+    const double b = binder_volume_per_carbon(0.04, 1780.0, 0.06, 1660.0);
+    EXPECT_NEAR(binder_filled_porosity(b), (0.04 / 1780.0) / (0.04 / 1780.0 + 0.06 / 1660.0),
+                1e-15);
 }
 
 TEST(AgglomerateCompaction, TheSpheresOwnHeightFallsWithTheAgglomeratesPores) {

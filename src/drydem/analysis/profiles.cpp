@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/analysis/profiles.hpp"
+#include "drydem/setup/solids.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -39,10 +40,8 @@ Profiles volume_fraction_profiles(const Structure& s, double dz, double top) {
     }
     const Formulation& f = s.formulation;
     // M-8.4: binder volume per carbon volume when the dissolved PVDF ends up in the agglomerates.
-    const double binder_per_carbon =
-        f.cb_mass_fraction > 0.0
-            ? (f.pvdf_mass_fraction / f.pvdf_density) / (f.cb_mass_fraction / f.cb_density)
-            : 0.0;
+    const double binder_per_carbon = binder_volume_per_carbon(f.pvdf_mass_fraction, f.pvdf_density,
+                                                              f.cb_mass_fraction, f.cb_density);
     for (std::size_t k = 0; k < n; ++k) {
         const double a = double(k) * dz, b = std::min(top, double(k + 1) * dz);
         const double vol = s.box.area() * (b - a);

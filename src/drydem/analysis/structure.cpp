@@ -15,7 +15,7 @@ double Formulation::solids_density() const {
 
 double Structure::cb_solid_fraction(std::size_t i) const {
     const Formulation& f = formulation;
-    if (!(f.cb_agglomerate_density > 0.0)) return 1.0 - f.cb_porosity;
+    if (!(f.cb_agglomerate_density > 0.0) || !(density[i] > 0.0)) return 1.0 - f.cb_porosity;
     return 1.0 - agglomerate_porosity(f.cb_porosity, density[i], f.cb_agglomerate_density);
 }
 
@@ -48,8 +48,9 @@ Structure structure_from_file(const ParticleFile& file, const FileDefaults& d,
         x.y -= file.ylo.value_or(0.0);
         s.box.wrap(x);
         const Phase ph = r.type == cb_type ? Phase::cb : Phase::ncm;
-        const double nominal =
-            ph == Phase::cb ? d.formulation.cb_agglomerate_density : d.formulation.ncm_density;
+        const double nominal = ph == Phase::cb && d.formulation.cb_agglomerate_density > 0.0
+                                   ? d.formulation.cb_agglomerate_density
+                                   : d.formulation.ncm_density;
         s.add(x, r.radius, ph, std::isnan(r.density) ? nominal : r.density);
     }
     if (s.size() == 0) throw InputError("the particle file has no particles");

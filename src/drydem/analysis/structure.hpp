@@ -21,8 +21,9 @@ struct Formulation {
     double ncm_density{}; ///< [kg/m^3], used where the file has no density
     double cb_density{};  ///< carbon [kg/m^3]
     double cb_porosity{}; ///< ε_CB: carbon fraction of an agglomerate as dried is 1 - ε_CB
-    /// ρ_0 of an agglomerate as dried (carbon + pore solvent, M-1.3): a CB sphere's density in the
-    /// file over ρ_0 is how far calendering compacted it (M-2.11)
+    /// ρ_0 of an agglomerate as dried (carbon + pore solvent, M-1.3) where the agglomerates may
+    /// have compacted (M-2.11): a CB sphere's density in the file over ρ_0 is how far. 0 = they
+    /// did not: every agglomerate has 1 - ε_CB of carbon, whatever density a file gives it
     double cb_agglomerate_density{};
     double pvdf_density{}; ///< [kg/m^3]
     double ncm_mass_fraction{}, cb_mass_fraction{}, pvdf_mass_fraction{};
@@ -40,7 +41,8 @@ struct Structure {
     Formulation formulation;
 
     [[nodiscard]] std::size_t size() const { return position.size(); }
-    /// The carbon's share of CB sphere i's envelope, 1 - ε_i (M-2.11: from its density).
+    /// The carbon's share of CB sphere i's envelope, 1 - ε_i (M-2.11: from its density where
+    /// formulation.cb_agglomerate_density is set, else 1 - ε_CB).
     [[nodiscard]] double cb_solid_fraction(std::size_t i) const;
     void add(const Vec3& x, double r, Phase ph, double rho = 0.0);
 };

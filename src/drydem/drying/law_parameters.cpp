@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/law_parameters.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/setup/solids.hpp"
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <string>
@@ -185,7 +186,14 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
 }
 
 AgglomerateCompactionParams agglomerate_compaction(const Config& c) {
-    return {c.cb_porosity, c.cb_minimal_porosity, c.cb_compaction_pressure};
+    return {c.cb_porosity,
+            c.cb_minimal_porosity > 0.0 ? c.cb_minimal_porosity : agglomerate_binder_porosity(c),
+            c.cb_compaction_pressure};
+}
+
+double agglomerate_binder_porosity(const Config& c) {
+    return binder_filled_porosity(binder_volume_per_carbon(c.pvdf_mass_fraction, c.pvdf_density,
+                                                           c.cb_mass_fraction, c.cb_density));
 }
 
 BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recipe) {

@@ -36,8 +36,11 @@ ForceField make_calendering_force_field(const Config& c, const FilmRecipe& recip
 BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recipe);
 
 /// The carbon-binder agglomerates' compaction in the dry film (calendering.cb_compaction_pressure,
-/// calendering.cb_minimal_porosity; ε_0 = formulation.cb_porosity; model.md M-2.11).
+/// calendering.cb_minimal_porosity, 0 = binder-filled, b / (1 + b); ε_0 = formulation.cb_porosity;
+/// model.md M-2.11).
 AgglomerateCompactionParams agglomerate_compaction(const Config& c);
+/// The inner porosity of an agglomerate whose pores hold only the recipe's binder (M-2.11).
+double agglomerate_binder_porosity(const Config& c);
 
 /// The limiting contact pressure of a contact of effective modulus E*: calendering.cb_yield_pressure
 /// for a contact with a CB sphere, calendering.yield_pressure for NCM with NCM or a wall, or else

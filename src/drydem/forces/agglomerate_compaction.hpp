@@ -8,7 +8,9 @@
 //   ε    ← min(ε, ε*(σ))                               plastic: the pores never reopen
 //   r    ← r ((1 − ε) / (1 − ε'))^{1/3}                solid kept (core/sphere.hpp envelope_ratio)
 // The exponential is the form of a powder's (and a whole electrode's) compaction curve; ε_0 is the
-// agglomerate as dried, ε_min the densest carbon-binder domain, p_c its compaction pressure.
+// agglomerate as dried, ε_min the densest carbon-binder domain, p_c its compaction pressure. The
+// binder sits in the agglomerate's pores (M-8.4), b = binder volume per carbon volume, so the
+// pores cannot close below the binder's share: ε_min ≥ b / (1 + b), the binder-filled domain.
 // The mass is kept, so a compacted sphere's density rises as 1/r³; that density is what the
 // particle file carries, and the agglomerate's inner porosity follows from it:
 //   1 − ε = (1 − ε_0) ρ / ρ_0                         ρ_0 the agglomerate's density as dried
@@ -22,11 +24,17 @@ namespace drydem {
 
 struct AgglomerateCompactionParams {
     double initial_porosity = 0.75; ///< ε_0, the agglomerate as dried (formulation.cb_porosity)
-    double minimal_porosity = 0.3;  ///< ε_min < ε_0
+    double minimal_porosity = 0.5;  ///< ε_min < ε_0, ≥ the binder-filled porosity
     double pressure = 0.0;          ///< p_c [Pa]; 0 = the agglomerate does not compact
 
     [[nodiscard]] bool compacts() const { return pressure > 0.0; }
 };
+
+/// b / (1 + b): the inner porosity of an agglomerate whose pores hold only its binder, b the binder
+/// volume per carbon volume (setup/solids.hpp binder_volume_per_carbon).
+[[nodiscard]] inline double binder_filled_porosity(double binder_per_carbon) {
+    return binder_per_carbon / (1.0 + binder_per_carbon);
+}
 
 /// ε' = min(ε, ε*(σ)): the inner porosity after the mean stress σ [Pa] on an agglomerate at ε.
 [[nodiscard]] inline double compacted_porosity(const AgglomerateCompactionParams& p,
