@@ -13,20 +13,27 @@ using namespace drydem;
 namespace {
 constexpr double kR = 2e-6, kRho = 4700, kL = 40e-6;
 
-TEST(ContactStress, ColumnUnderThePlateCarriesThePlatePressure) {
+/// Two spheres stacked on the substrate under a plate 30 nm low (the overlap shared among three
+/// contacts), relaxed by FIRE to rest.
+Simulation pressed_column(double plate) {
     ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.5);
     for (BodyParams& b : ff.body) law<PlateContactLaw>(b) = law<SubstrateContactLaw>(b);
     ParticleStore p;
     p.add(1, 0, kR, kRho, {5e-6, 5e-6, kR});
     p.add(2, 0, kR, kRho, {5e-6, 5e-6, 3 * kR});
     Simulation sim(std::move(p), Box{kL, kL}, ff, {2e-10, 0.1e-6, 1});
-    const double plate = 4 * kR - 30e-9; // 30 nm of overlap to share among three contacts
     sim.set_plate_height(plate);
     FireRelaxation fire(2e-10);
     for (int k = 0; k < 40000 && fire.rms_force() > 1e-12; ++k) {
         sim.step();
         fire.after_step(sim);
     }
+    return sim;
+}
+
+TEST(ContactStress, ColumnUnderThePlateCarriesThePlatePressure) {
+    const double plate = 4 * kR - 30e-9;
+    const Simulation sim = pressed_column(plate);
     const double pressure = -sim.body_law_total<PlateContactLaw>().force.z / (kL * kL);
     ASSERT_GT(pressure, 0.0);
     const Sym3 s = sim.contact_stress(kL * kL * plate);
@@ -82,19 +89,8 @@ TEST(ContactStress, ParticleMeanStressSplitsThePairAtItsContactPlane) {
 }
 
 TEST(ContactStress, ParticleMeanStressOfAColumnUnderThePlate) {
-    ForceField ff = uniform_contact_force_field(1, 142e9, 0.3, 0.5, 0.5);
-    for (BodyParams& b : ff.body) law<PlateContactLaw>(b) = law<SubstrateContactLaw>(b);
-    ParticleStore p;
-    p.add(1, 0, kR, kRho, {5e-6, 5e-6, kR});
-    p.add(2, 0, kR, kRho, {5e-6, 5e-6, 3 * kR});
-    Simulation sim(std::move(p), Box{kL, kL}, ff, {2e-10, 0.1e-6, 1});
     const double plate = 4 * kR - 30e-9;
-    sim.set_plate_height(plate);
-    FireRelaxation fire(2e-10);
-    for (int k = 0; k < 40000 && fire.rms_force() > 1e-12; ++k) {
-        sim.step();
-        fire.after_step(sim);
-    }
+    const Simulation sim = pressed_column(plate);
     // Each sphere carries the plate's force F through two contacts, levers summing to ~2 r:
     // σ = F 2r / 3V, compression positive; the sum matches the packing's stress.
     const double force = -sim.body_law_total<PlateContactLaw>().force.z;
