@@ -226,18 +226,6 @@ ParticleStore CalenderRun::dried_film() {
 /// Before the first step (pressure mode): a target pressure that no packing of these contacts
 /// carries, or a plate so fast that the film cannot follow it quasi-statically.
 void CalenderRun::refuse_unreachable_target() const {
-    const double filled = agglomerate_binder_porosity(c_);
-    if (compaction_.compacts() && compaction_.minimal_porosity >= compaction_.initial_porosity)
-        throw InputError(fmt::format(
-            "calendering.cb_minimal_porosity = {:.3g} must be below formulation.cb_porosity = "
-            "{:.3g}: the agglomerates compact from their dried inner porosity down to it",
-            compaction_.minimal_porosity, compaction_.initial_porosity));
-    if (compaction_.compacts() && compaction_.minimal_porosity < filled)
-        throw InputError(fmt::format(
-            "calendering.cb_minimal_porosity = {:.3g} is below {:.3g}, the share of the "
-            "agglomerates' pores that their binder fills (formulation.pvdf_mass_fraction over "
-            "formulation.cb_mass_fraction, by volume): no pressure closes those; 0 chooses it",
-            compaction_.minimal_porosity, filled));
     if (c_.calender_mode == "displacement") {
         // The gap at the target porosity must hold the spheres' volume: below it only overlap
         // lenses of the size of whole spheres would make room (docs/calendering.md).

@@ -186,9 +186,22 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
 }
 
 AgglomerateCompactionParams agglomerate_compaction(const Config& c) {
-    return {c.cb_porosity,
-            c.cb_minimal_porosity > 0.0 ? c.cb_minimal_porosity : agglomerate_binder_porosity(c),
-            c.cb_compaction_pressure};
+    const double filled = agglomerate_binder_porosity(c);
+    const AgglomerateCompactionParams p{
+        c.cb_porosity, c.cb_minimal_porosity > 0.0 ? c.cb_minimal_porosity : filled,
+        c.cb_compaction_pressure};
+    if (p.compacts() && p.minimal_porosity >= p.initial_porosity)
+        throw InputError(fmt::format(
+            "calendering.cb_minimal_porosity = {:.3g} must be below formulation.cb_porosity = "
+            "{:.3g}: the agglomerates compact from their dried inner porosity down to it",
+            p.minimal_porosity, p.initial_porosity));
+    if (p.compacts() && p.minimal_porosity < filled)
+        throw InputError(fmt::format(
+            "calendering.cb_minimal_porosity = {:.3g} is below {:.3g}, the share of the "
+            "agglomerates' pores that their binder fills (formulation.pvdf_mass_fraction over "
+            "formulation.cb_mass_fraction, by volume): no pressure closes those; 0 chooses it",
+            p.minimal_porosity, filled));
+    return p;
 }
 
 double agglomerate_binder_porosity(const Config& c) {

@@ -37,7 +37,7 @@ BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recip
 
 /// The carbon-binder agglomerates' compaction in the dry film (calendering.cb_compaction_pressure,
 /// calendering.cb_minimal_porosity, 0 = binder-filled, b / (1 + b); ε_0 = formulation.cb_porosity;
-/// model.md M-2.11).
+/// model.md M-2.11). InputError for an ε_min not below ε_0 or below the binder-filled porosity.
 AgglomerateCompactionParams agglomerate_compaction(const Config& c);
 /// The inner porosity of an agglomerate whose pores hold only the recipe's binder (M-2.11).
 double agglomerate_binder_porosity(const Config& c);
