@@ -10,7 +10,10 @@
 //      target (displacement mode) or it carries the target pressure (pressure mode).
 //   4. hold: calendering.hold_time at the plate height (pressure mode: a servo on the pressure).
 //   5. unload: the plate moves up until it carries nothing and clears the film; it is removed.
-//   6. relax: calendering.relaxation without the plate, then the film is measured (springback).
+//   6. relax: without the plate, FIRE brings the film to rest (the force tolerance of the
+//      settling, at most calendering.relaxation); then it is measured (springback). The roll
+//      leaves a real film over milliseconds, so its springback is that of a film at rest: the
+//      last plate frames of a dynamic run still see it rising.
 //   7. end: final.csv, summary.json with the fitted compaction curve, the structure analysis.
 // From the load on, every kCompactionEvery steps the CB agglomerates compact under their mean
 // stress (calendering.cb_compaction_pressure, model.md M-2.11).
@@ -157,7 +160,8 @@ private:
     std::unique_ptr<Simulation> sim_;
     StabilityGuard guard_;
     FireRelaxation fire_;
-    double settle_force_; ///< the settling's force tolerance [N]
+    FireRelaxation relax_fire_; ///< the relaxation after the unloading (a fresh FIRE)
+    double settle_force_;       ///< the settling's force tolerance [N]
     bool settled_ = false;
     double speed_; ///< calendering.plate_speed [m/s]
     AgglomerateCompactionParams compaction_;
@@ -184,7 +188,7 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
       log_(make_run_logger(o.output_dir, o.quiet, false, status_)), film_(describe_film(c)),
       sim_(make_simulation(dried_film())),
       guard_(GuardPolicy::adapt, largest_calender_step(c), *log_),
-      fire_(1.8 * largest_calender_step(c)),
+      fire_(1.8 * largest_calender_step(c)), relax_fire_(1.8 * largest_calender_step(c)),
       settle_force_(c.calender_settle_tolerance * film_.box.area() /
                     double(std::max<std::size_t>(sim_->particles().size(), 1))),
       speed_(c.calender_plate_speed), compaction_(agglomerate_compaction(c)),
@@ -343,7 +347,7 @@ bool CalenderRun::phase_over() const {
     case Phase::unload:
         return pressure_ <= 0.0 && sim_->plate_height() > highest_top();
     case Phase::relax:
-        return t >= c_.calender_relaxation;
+        return relax_fire_.rms_force() <= settle_force_ || t >= c_.calender_relaxation;
     default:
         return true;
     }
@@ -371,6 +375,8 @@ void CalenderRun::step() {
     sim_->step();
     if (phase_ == Phase::settle)
         fire_.after_step(*sim_);
+    else if (phase_ == Phase::relax)
+        relax_fire_.after_step(*sim_);
     else
         guard_.after_step(*sim_);
     if (compaction_.compacts() && phase_ != Phase::settle && steps() % kCompactionEvery == 0)
@@ -501,6 +507,12 @@ void CalenderRun::finish() {
         r_.unloaded_thickness = film_top();
         r_.unloaded_porosity = porosity_at(r_.unloaded_thickness);
         r_.springback = (r_.unloaded_thickness - r_.peak_thickness) / r_.peak_thickness;
+        r_.unloaded_at_rest = relax_fire_.rms_force() <= settle_force_;
+        if (!r_.unloaded_at_rest)
+            log_->warn("the unloaded film did not come to rest within calendering.relaxation = "
+                       "{:.3g} s (rms force {:.3g} N, tolerance {:.3g} N): its springback is "
+                       "that of a film still moving",
+                       c_.calender_relaxation, relax_fire_.rms_force(), settle_force_);
     }
     for (std::size_t k = 0; k < load_pressure_.size(); ++k)
         if (load_pressure_[k] >= 0.01 * r_.peak_pressure)
@@ -576,9 +588,10 @@ json CalenderRun::summary() const {
                  {"porosity_below_plate", porosity_at(peak_plate_)},
                  {"sphere_fraction", peak_sphere_fraction_},
                  {"cb_inner_porosity", peak_cb_porosity_}};
-    s["unloaded"] = {{"thickness_um", r_.unloaded_thickness * 1e6},
-                     {"porosity", r_.unloaded_porosity},
-                     {"springback_percent", 100.0 * r_.springback}};
+    s["unloaded"] = {
+        {"thickness_um", r_.unloaded_thickness * 1e6}, {"porosity", r_.unloaded_porosity},
+        {"springback_percent", 100.0 * r_.springback}, {"at_rest", r_.unloaded_at_rest},
+        {"rms_force_N", relax_fire_.rms_force()},      {"tolerance_N", settle_force_}};
     s["compaction_fit"] = {{"ok", fit.ok},
                            {"model", "porosity = porosity_min + (porosity_0 - porosity_min) "
                                      "exp(-pressure / resistance)"},
