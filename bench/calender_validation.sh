@@ -15,6 +15,9 @@
 #   ..._c<C>        (before _v/_s) with compacting agglomerates: calendering.cb_compaction_pressure
 #                   C MPa; ..._c<C>_m<M> also calendering.cb_minimal_porosity M (docs/model.md
 #                   M-2.11); e.g. sg_p42.7_c120_v0.4_s16
+#   ..._y<Y>        (before _v/_s) calendering.cb_yield_pressure Y MPa (the CB contacts'
+#                   limiting pressure); ..._n<N> calendering.yield_pressure N GPa (the NCM
+#                   contacts'); e.g. sg_p159.4_c60_y60_n1.5_v0.4_s16
 # Defaults of the calendering runs: plate speed V (0.2 m/s), density scaling S (16), the
 # calendering defaults otherwise (docs/configuration.md). Extra --set for every calendering run:
 # CALENDER_SET (space-separated KEY=VALUE).
@@ -56,6 +59,8 @@ press() {  # $1 dried folder, $2 step name (carries _v<V> and _s<S>), rest: --se
   local extra=()
   [[ $step =~ _c([0-9.]+) ]] && extra+=(--set calendering.cb_compaction_pressure="${BASH_REMATCH[1]} MPa")
   [[ $step =~ _m([0-9.]+) ]] && extra+=(--set calendering.cb_minimal_porosity="${BASH_REMATCH[1]}")
+  [[ $step =~ _y([0-9.]+) ]] && extra+=(--set calendering.cb_yield_pressure="${BASH_REMATCH[1]} MPa")
+  [[ $step =~ _n([0-9.]+) ]] && extra+=(--set calendering.yield_pressure="${BASH_REMATCH[1]} GPa")
   for kv in ${CALENDER_SET:-}; do extra+=(--set "$kv"); done
   rm -rf "$dir"
   "$drydem" calender "$dried" -o "$dir" --threads "$threads" --quiet --no-plots \

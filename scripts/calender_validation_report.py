@@ -46,7 +46,9 @@ def row(run, s):
         'cb_pc': s.get('cb_compaction', {}).get('pressure_MPa', 0.0),
         'cb_min': s.get('cb_compaction', {}).get('minimal_porosity'),
         'cb_peak': s['peak'].get('cb_inner_porosity'),
-        'cb_end': s.get('cb_compaction', {}).get('inner_porosity_end')}
+        'cb_end': s.get('cb_compaction', {}).get('inner_porosity_end'),
+        # runs before the FIRE relaxation read the film while it still moved: no entry
+        'at_rest': {True: 'yes', False: 'no'}.get(s['unloaded'].get('at_rest'), 'moving')}
 
 
 def runs(d, prefix):
@@ -114,19 +116,20 @@ def compaction(d):
     print('Compacting agglomerates on the Sangros Gimenez 2019 film: unloaded porosity against '
           'the article at the target pressure.\n')
     print('| run | p_c [MPa] | eps_min | peak [MPa] | at peak | unloaded | article | difference | '
-          'springback [%] | CB inner porosity at peak / end | bonds broken | max overlap | '
-          'steps | wall [s] |')
-    print('|' + '---|' * 14)
+          'springback [%] | unloaded at rest | CB inner porosity at peak / end | bonds broken | '
+          'max overlap | steps | wall [s] |')
+    print('|' + '---|' * 15)
     for name, r in rows:
         target = float(re.match(r'sg_p([0-9.]+)', name).group(1))
         article = SANGROS.get(target)
         done = r['status'] == 'completed'
-        print('| {} | {:g} | {:g} | {:.1f} | {:.3f} | {} | {} | {} | {} | {} / {} | {:.0%} | '
+        print('| {} | {:g} | {:g} | {:.1f} | {:.3f} | {} | {} | {} | {} | {} | {} / {} | {:.0%} | '
               '{:.2f} | {} | {:.0f} |'.format(
                   name, r['cb_pc'], r['cb_min'], r['pressure'], r['peak'],
                   fmt(r['unloaded'] if done else None, '.3f'), fmt(article, '.3f'),
                   fmt(r['unloaded'] - article if done and article else None, '+.3f'),
-                  fmt(r['springback'] if done else None, '.1f'), fmt(r['cb_peak'], '.3f'),
+                  fmt(r['springback'] if done else None, '.1f'), r['at_rest'],
+                  fmt(r['cb_peak'], '.3f'),
                   fmt(r['cb_end'], '.3f'), r['broken'], r['overlap'], r['steps'], r['wall']))
     print()
 
