@@ -65,6 +65,13 @@ constexpr const char* phase_name(Phase p) {
 /// stress pass costs about one pair-force evaluation.
 constexpr std::int64_t kCompactionEvery = 20;
 
+/// The unloaded film is also at rest when its top moves by less than this share of it over
+/// kTopWindow of relaxation: deep plastic contacts with friction can keep a residual force above
+/// the settling tolerance on a few particles while the thickness, what is measured, stands still
+/// (79.1 MPa on the Sangros film: 0.2 nm in 10 us at 160x the tolerance).
+constexpr double kStaticTop = 1e-5;
+constexpr double kTopWindow = 0.5e-6; ///< [s]
+
 /// The largest step of the calendering run: calendering.time_step, or 1e-9 s.
 double largest_calender_step(const Config& c) {
     return c.calender_time_step > 0.0 ? c.calender_time_step : 1e-9;
@@ -97,6 +104,7 @@ private:
     [[nodiscard]] bool phase_over() const;
     void next_phase();
     void record();
+    void watch_top();
     void write_frame();
     [[nodiscard]] double plate_pressure() const {
         return -sim_->body_law_total<PlateContactLaw>().force.z / film_.box.area();
@@ -161,7 +169,9 @@ private:
     StabilityGuard guard_;
     FireRelaxation fire_;
     FireRelaxation relax_fire_; ///< the relaxation after the unloading (a fresh FIRE)
-    double settle_force_;       ///< the settling's force tolerance [N]
+    double relax_top_ = NAN, next_top_check_ = 0.0; ///< the film's top at the last check [m]
+    bool top_static_ = false; ///< the top moved less than kStaticTop over the last kTopWindow
+    double settle_force_;     ///< the settling's force tolerance [N]
     bool settled_ = false;
     double speed_; ///< calendering.plate_speed [m/s]
     AgglomerateCompactionParams compaction_;
@@ -347,7 +357,8 @@ bool CalenderRun::phase_over() const {
     case Phase::unload:
         return pressure_ <= 0.0 && sim_->plate_height() > highest_top();
     case Phase::relax:
-        return relax_fire_.rms_force() <= settle_force_ || t >= c_.calender_relaxation;
+        return relax_fire_.rms_force() <= settle_force_ || top_static_ ||
+               t >= c_.calender_relaxation;
     default:
         return true;
     }
@@ -375,10 +386,12 @@ void CalenderRun::step() {
     sim_->step();
     if (phase_ == Phase::settle)
         fire_.after_step(*sim_);
-    else if (phase_ == Phase::relax)
+    else if (phase_ == Phase::relax) {
         relax_fire_.after_step(*sim_);
-    else
+        watch_top();
+    } else {
         guard_.after_step(*sim_);
+    }
     if (compaction_.compacts() && phase_ != Phase::settle && steps() % kCompactionEvery == 0)
         compact_agglomerates();
     const bool plate = phase_ == Phase::load || phase_ == Phase::hold || phase_ == Phase::unload;
@@ -465,6 +478,16 @@ void CalenderRun::compact_agglomerates() {
     }
 }
 
+/// While relaxing: every kTopWindow, whether the film's top stood still since the last look.
+void CalenderRun::watch_top() {
+    const double t = now() - phase_start_;
+    if (t < next_top_check_) return;
+    const double top = film_top();
+    top_static_ = std::isfinite(relax_top_) && std::abs(top - relax_top_) < kStaticTop * top;
+    relax_top_ = top;
+    next_top_check_ = t + kTopWindow;
+}
+
 void CalenderRun::write_frame() {
     append_lammps_dump(dump_, sim_->particles(), film_.box, steps(),
                        std::isfinite(sim_->plate_height()) ? sim_->plate_height() : highest_top());
@@ -507,11 +530,11 @@ void CalenderRun::finish() {
         r_.unloaded_thickness = film_top();
         r_.unloaded_porosity = porosity_at(r_.unloaded_thickness);
         r_.springback = (r_.unloaded_thickness - r_.peak_thickness) / r_.peak_thickness;
-        r_.unloaded_at_rest = relax_fire_.rms_force() <= settle_force_;
+        r_.unloaded_at_rest = relax_fire_.rms_force() <= settle_force_ || top_static_;
         if (!r_.unloaded_at_rest)
             log_->warn("the unloaded film did not come to rest within calendering.relaxation = "
-                       "{:.3g} s (rms force {:.3g} N, tolerance {:.3g} N): its springback is "
-                       "that of a film still moving",
+                       "{:.3g} s (rms force {:.3g} N, tolerance {:.3g} N, and its top still "
+                       "moved): its springback is that of a film still moving",
                        c_.calender_relaxation, relax_fire_.rms_force(), settle_force_);
     }
     for (std::size_t k = 0; k < load_pressure_.size(); ++k)
@@ -588,10 +611,13 @@ json CalenderRun::summary() const {
                  {"porosity_below_plate", porosity_at(peak_plate_)},
                  {"sphere_fraction", peak_sphere_fraction_},
                  {"cb_inner_porosity", peak_cb_porosity_}};
-    s["unloaded"] = {
-        {"thickness_um", r_.unloaded_thickness * 1e6}, {"porosity", r_.unloaded_porosity},
-        {"springback_percent", 100.0 * r_.springback}, {"at_rest", r_.unloaded_at_rest},
-        {"rms_force_N", relax_fire_.rms_force()},      {"tolerance_N", settle_force_}};
+    s["unloaded"] = {{"thickness_um", r_.unloaded_thickness * 1e6},
+                     {"porosity", r_.unloaded_porosity},
+                     {"springback_percent", 100.0 * r_.springback},
+                     {"at_rest", r_.unloaded_at_rest},
+                     {"rms_force_N", relax_fire_.rms_force()},
+                     {"tolerance_N", settle_force_},
+                     {"top_static", top_static_}};
     s["compaction_fit"] = {{"ok", fit.ok},
                            {"model", "porosity = porosity_min + (porosity_0 - porosity_min) "
                                      "exp(-pressure / resistance)"},
