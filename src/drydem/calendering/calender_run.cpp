@@ -11,7 +11,8 @@
 //   4. hold: calendering.hold_time at the plate height (pressure mode: a servo on the pressure).
 //   5. unload: the plate moves up until it carries nothing and clears the film; it is removed.
 //   6. relax: without the plate, FIRE brings the film to rest (the force tolerance of the
-//      settling, at most calendering.relaxation); then it is measured (springback). The roll
+//      settling, or its top standing still; at most calendering.relaxation); then it is
+//      measured (springback). The roll
 //      leaves a real film over milliseconds, so its springback is that of a film at rest: the
 //      last plate frames of a dynamic run still see it rising.
 //   7. end: final.csv, summary.json with the fitted compaction curve, the structure analysis.
@@ -105,6 +106,10 @@ private:
     void next_phase();
     void record();
     void watch_top();
+    /// The relaxation's end: the settling's force tolerance reached, or the top standing still.
+    [[nodiscard]] bool at_rest() const {
+        return relax_fire_.rms_force() <= settle_force_ || top_static_;
+    }
     void write_frame();
     [[nodiscard]] double plate_pressure() const {
         return -sim_->body_law_total<PlateContactLaw>().force.z / film_.box.area();
@@ -357,8 +362,7 @@ bool CalenderRun::phase_over() const {
     case Phase::unload:
         return pressure_ <= 0.0 && sim_->plate_height() > highest_top();
     case Phase::relax:
-        return relax_fire_.rms_force() <= settle_force_ || top_static_ ||
-               t >= c_.calender_relaxation;
+        return at_rest() || t >= c_.calender_relaxation;
     default:
         return true;
     }
@@ -530,7 +534,7 @@ void CalenderRun::finish() {
         r_.unloaded_thickness = film_top();
         r_.unloaded_porosity = porosity_at(r_.unloaded_thickness);
         r_.springback = (r_.unloaded_thickness - r_.peak_thickness) / r_.peak_thickness;
-        r_.unloaded_at_rest = relax_fire_.rms_force() <= settle_force_ || top_static_;
+        r_.unloaded_at_rest = at_rest();
         if (!r_.unloaded_at_rest)
             log_->warn("the unloaded film did not come to rest within calendering.relaxation = "
                        "{:.3g} s (rms force {:.3g} N, tolerance {:.3g} N, and its top still "

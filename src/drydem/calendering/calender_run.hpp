@@ -33,7 +33,7 @@ struct CalenderResult {
     double unloaded_thickness = 0.0; ///< the same after relaxation [m]
     double unloaded_porosity = 0.0;
     double springback = 0.0;          ///< (unloaded - peak) / peak thickness
-    bool unloaded_at_rest = false;    ///< the relaxation reached the settling's force tolerance
+    bool unloaded_at_rest = false;    ///< force tolerance reached or top standing still
     double max_inertial_number = 0.0; ///< while loading above 1 % of the peak pressure
     std::int64_t steps = 0;
     double wall_time = 0.0; ///< [s], the end-of-run analysis excluded
