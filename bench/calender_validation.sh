@@ -18,6 +18,8 @@
 #   ..._y<Y>        (before _v/_s) calendering.cb_yield_pressure Y MPa (the CB contacts'
 #                   limiting pressure); ..._n<N> calendering.yield_pressure N GPa (the NCM
 #                   contacts'); e.g. sg_p159.4_c60_y60_n1.5_v0.4_s16
+#   ..._d<D>        (before _v/_s) calendering.cb_dense_yield_pressure D MPa (the CB contacts
+#                   harden to it as their lens compacts the agglomerate, docs/model.md M-2.12)
 # Defaults of the calendering runs: plate speed V (0.2 m/s), density scaling S (16), the
 # calendering defaults otherwise (docs/configuration.md). Extra --set for every calendering run:
 # CALENDER_SET (space-separated KEY=VALUE).
@@ -61,6 +63,7 @@ press() {  # $1 dried folder, $2 step name (carries _v<V> and _s<S>), rest: --se
   [[ $step =~ _m([0-9.]+) ]] && extra+=(--set calendering.cb_minimal_porosity="${BASH_REMATCH[1]}")
   [[ $step =~ _y([0-9.]+) ]] && extra+=(--set calendering.cb_yield_pressure="${BASH_REMATCH[1]} MPa")
   [[ $step =~ _n([0-9.]+) ]] && extra+=(--set calendering.yield_pressure="${BASH_REMATCH[1]} GPa")
+  [[ $step =~ _d([0-9.]+) ]] && extra+=(--set calendering.cb_dense_yield_pressure="${BASH_REMATCH[1]} MPa")
   for kv in ${CALENDER_SET:-}; do extra+=(--set "$kv"); done
   rm -rf "$dir"
   "$drydem" calender "$dried" -o "$dir" --threads "$threads" --quiet --no-plots \

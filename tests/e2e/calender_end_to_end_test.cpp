@@ -255,6 +255,28 @@ TEST(CalenderEndToEnd, CompactingAgglomeratesShrinkWithTheirCarbonKept) {
     EXPECT_LT(after, before);
 }
 
+TEST(CalenderEndToEnd, HardeningCbContactsStopTheAgglomeratesBeingPressedThrough) {
+    // Soft CB contacts (p_y0 1 MPa) under 5 MPa: at a constant limiting pressure an NCM particle
+    // presses a CB sphere through itself, and the run stops on the runaway overlap; hardening to
+    // 100 MPa as the contacts' lenses compact the agglomerates (model.md M-2.12) holds them, and
+    // the film is pressed and unloaded to rest.
+    auto press = [](const std::string& dense) {
+        const Config c =
+            small_film({"calendering.target_pressure=5MPa", "calendering.cb_yield_pressure=1MPa",
+                        "calendering.cb_dense_yield_pressure=" + dense});
+        const auto [run, out] = folders_for(c);
+        return std::pair{run_calendering(c, {run, out, true, false, std::nullopt}), out};
+    };
+    const auto [soft, soft_out] = press("0");
+    EXPECT_FALSE(soft.completed);
+    EXPECT_NE(soft.error.find("runaway overlap"), std::string::npos) << soft.error;
+    const auto [hard, hard_out] = press("100MPa");
+    ASSERT_TRUE(hard.completed) << hard.error;
+    const nlohmann::json s = summary_of(hard_out);
+    EXPECT_NEAR(s["peak"]["pressure_MPa"].get<double>(), 5.0, 0.25);
+    EXPECT_TRUE(s["unloaded"]["at_rest"].get<bool>());
+}
+
 TEST(CalenderEndToEnd, RefusesAMinimalPorosityAboveTheDriedOneOrBelowTheBinders) {
     // Above the dried 0.75 it is no compaction; below 0.483 the binder would have to vanish.
     for (const char* e : {"0.8", "0.3"}) {

@@ -157,6 +157,11 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
     yield("NCM-CB", law<HertzMindlinLaw>(ff.pair_params(ncm, cb)), r_ncm * r_cb / (r_ncm + r_cb));
     yield("CB-CB", law<HertzMindlinLaw>(ff.pair_params(cb, cb)), 0.5 * r_cb);
     yield("CB-plate", law<PlateContactLaw>(ff.body_params(cb)), r_cb);
+    if (const HertzMindlinParams& h = law<HertzMindlinLaw>(ff.pair_params(cb, cb));
+        agglomerate_hardening(h).hardens())
+        fmt::print("  CB contacts harden to p_y {:.3g} GPa as their lens compacts the agglomerate "
+                   "from inner porosity {:.3g} to {:.3g} (model.md M-2.12)\n",
+                   h.dense_yield_pressure * 1e-9, h.agglomerate_porosity, h.dense_porosity);
     fmt::print(
         "  CB spheres E = {:.3g} GPa, plate E = {:.3g} GPa\n",
         (c.calender_cb_youngs_modulus > 0 ? c.calender_cb_youngs_modulus : c.cb_youngs_modulus) *

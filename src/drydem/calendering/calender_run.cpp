@@ -519,7 +519,10 @@ CalenderResult CalenderRun::calender() {
         if (r_.error.find("runaway overlap") != std::string::npos)
             r_.error += ". In calendering the plate presses the pair together: the film cannot "
                         "reach this target as spheres (docs/calendering.md); raise "
-                        "calendering.target_porosity or lower calendering.target_pressure";
+                        "calendering.target_porosity or lower calendering.target_pressure. A CB "
+                        "sphere's contact that flattens at a constant limiting pressure lets the "
+                        "sphere be pressed through: let it harden as the agglomerate compacts "
+                        "(calendering.cb_dense_yield_pressure, docs/model.md M-2.12)";
         log_->error("calendering stopped: {}", r_.error);
     }
     finish();

@@ -151,6 +151,32 @@ double contact_yield_pressure(const Config& c, double e_star, bool with_cb) {
     return yield_pressure_at(e_star, 1.0, 2.0 * c.calender_yield_displacement);
 }
 
+namespace {
+/// M-2.12: a contact with CB sphere(s) on `sides` hardens from its p_y toward
+/// calendering.cb_dense_yield_pressure as its lens compacts the agglomerate(s).
+void set_hardening(HertzMindlinParams& p, const Config& c, AgglomerateSides sides) {
+    if (c.cb_dense_yield_pressure <= 0.0 || sides == AgglomerateSides::none) return;
+    if (p.yield_pressure <= 0.0)
+        throw InputError(fmt::format(
+            "calendering.cb_dense_yield_pressure = {:.4g} MPa, but the CB contacts do not yield "
+            "(calendering.cb_yield_pressure = 0 and calendering.yield_displacement = 0): only a "
+            "yielding contact hardens; set one of them, or cb_dense_yield_pressure = 0",
+            c.cb_dense_yield_pressure * 1e-6));
+    if (c.cb_dense_yield_pressure < p.yield_pressure)
+        throw InputError(fmt::format(
+            "calendering.cb_dense_yield_pressure = {:.4g} MPa is below the CB contacts' limiting "
+            "pressure {:.4g} MPa (calendering.cb_yield_pressure, or from "
+            "calendering.yield_displacement): the densest agglomerate carries at least what the "
+            "loose one does; give a value of at least that, or 0 for no hardening",
+            c.cb_dense_yield_pressure * 1e-6, p.yield_pressure * 1e-6));
+    const AgglomerateCompactionParams a = agglomerate_compaction(c);
+    p.dense_yield_pressure = c.cb_dense_yield_pressure;
+    p.agglomerate_porosity = a.initial_porosity;
+    p.dense_porosity = a.minimal_porosity;
+    p.agglomerates = sides;
+}
+} // namespace
+
 ForceField make_calendering_force_field(const Config& config, const FilmRecipe& recipe) {
     Config c = config; // physical: the drying run's scaling is not the calendering's
     c.scaling_scheme = "paper";
@@ -170,13 +196,20 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
             mix_hertz_mindlin(youngs_modulus(c, a), c.poisson_ratio, c.plate_youngs_modulus,
                               c.plate_poisson_ratio, c.restitution, c.friction, c.rolling_friction);
         HertzMindlinParams& substrate = law<SubstrateContactLaw>(ff.body[std::size_t(i)]);
+        const AgglomerateSides on_i = a.is_cb ? AgglomerateSides::i : AgglomerateSides::none;
         plate.yield_pressure = contact_yield_pressure(c, plate.e_star, a.is_cb);
         substrate.yield_pressure = contact_yield_pressure(c, substrate.e_star, a.is_cb);
+        set_hardening(plate, c, on_i);
+        set_hardening(substrate, c, on_i);
         law<PlateContactLaw>(ff.body[std::size_t(i)]) = plate;
         for (int j = 0; j < n; ++j) {
             HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair[std::size_t(i * n + j)]);
-            const bool with_cb = a.is_cb || recipe.species[std::size_t(j)].is_cb;
-            hm.yield_pressure = contact_yield_pressure(c, hm.e_star, with_cb);
+            const bool j_cb = recipe.species[std::size_t(j)].is_cb;
+            hm.yield_pressure = contact_yield_pressure(c, hm.e_star, a.is_cb || j_cb);
+            set_hardening(
+                hm, c,
+                AgglomerateSides(std::uint8_t(on_i) | std::uint8_t(j_cb ? AgglomerateSides::j
+                                                                        : AgglomerateSides::none)));
         }
     }
     if (const auto bad = force_field_violations(ff); !bad.empty())

@@ -27,7 +27,9 @@ ForceField make_drying_force_field(const Config& c, const FilmRecipe& recipe,
 /// particle (with NCM, the substrate, the plate) elastic-plastic, Thornton-Ning with
 /// calendering.yield_pressure, or the p_y at which a pair yields at calendering.yield_displacement
 /// × 2R* (model.md M-2.8, M-2.9); CB contacts yield at calendering.cb_yield_pressure (or the
-/// same yield displacement): the carbon-binder agglomerates crush.
+/// same yield displacement): the carbon-binder agglomerates crush, and with
+/// calendering.cb_dense_yield_pressure their contacts harden as the lens compacts them (M-2.12).
+/// InputError for a dense yield pressure below the contacts' own or without yielding contacts.
 ForceField make_calendering_force_field(const Config& c, const FilmRecipe& recipe);
 
 /// The solid bonds' parameters in the dry film (calendering.bond_*, model.md M-2.10): CB-CB and

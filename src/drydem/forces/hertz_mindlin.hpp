@@ -6,8 +6,11 @@
 //   F_n,i = -[(4/3) E* sqrt(R*) δ^{3/2} + γ_n v_n] n            (M-2.2, not clipped)
 //   F_t = -S_t ξ - γ_t v_t, |F_t| ≤ μ_s |F_n|                  (M-2.3)
 // With a limiting contact pressure p_y > 0 the elastic normal force is Thornton-Ning's
-// elastic-plastic one instead (thornton_ning.hpp, M-2.8), for compaction.
+// elastic-plastic one instead (thornton_ning.hpp, M-2.8), for compaction; with a CB agglomerate
+// in the contact p_y may harden as the contact's lens compacts it (agglomerate_hardening.hpp,
+// M-2.12).
 #pragma once
+#include "drydem/forces/agglomerate_hardening.hpp"
 #include "drydem/forces/pair_geometry.hpp"
 #include "drydem/forces/thornton_ning.hpp"
 #include "drydem/forces/resistance.hpp"
@@ -27,6 +30,11 @@ struct HertzMindlinParams {
     double friction = 0.8;         ///< sliding friction μ_s
     double rolling_friction = 0.0; ///< μ_r (C-7: off by default)
     double yield_pressure = 0.0; ///< Thornton-Ning limiting contact pressure p_y [Pa]; 0 = elastic
+    /// M-2.12: p_y hardens toward dense_yield_pressure (0 = it does not) as the contact's lens
+    /// compacts its agglomerate side(s) from agglomerate_porosity to dense_porosity.
+    double dense_yield_pressure = 0.0;
+    double agglomerate_porosity = 0.0, dense_porosity = 0.0;
+    AgglomerateSides agglomerates = AgglomerateSides::none;
     /// Derived: 2 sqrt(5/6) β sqrt(2 E*) and 2 sqrt(5/6) β sqrt(8 G*), so that
     /// γ_n = damping_n (R* δ)^{1/4} sqrt(m*) and γ_t = damping_t (R* δ)^{1/4} sqrt(m*) (M-2.1)
     /// cost one square root per contact. Set by mix_hertz_mindlin.
@@ -73,6 +81,11 @@ inline HertzMindlinParams mix_hertz_mindlin(double e_i, double nu_i, double e_j,
     return p;
 }
 
+/// The hardening of the pair's limiting pressure (M-2.12).
+inline AgglomerateHardening agglomerate_hardening(const HertzMindlinParams& p) {
+    return {p.agglomerate_porosity, p.dense_porosity, p.dense_yield_pressure, p.agglomerates};
+}
+
 /// Stiffnesses and damping coefficients of a contact with overlap δ (M-2.1); shared by the law,
 /// its resistance (resistance.hpp) and the stability guard's stiffness operator.
 struct HertzMindlinCoefficients {
@@ -92,14 +105,28 @@ inline double hertz_elastic_force(const HertzMindlinCoefficients& co, double ove
     return (2.0 / 3.0) * co.s_n * overlap;
 }
 /// The conservative normal force and its slope given the deepest overlap the contact reached:
-/// Hertz, or Thornton-Ning's elastic-plastic force when p_y > 0 (M-2.8).
-inline ElasticPlasticNormal contact_normal(const HertzMindlinCoefficients& co, double r_eff,
+/// Hertz, or Thornton-Ning's elastic-plastic force when p_y > 0 (M-2.8), with p_y hardened at
+/// the deepest overlap (M-2.12).
+inline ElasticPlasticNormal contact_normal(const HertzMindlinCoefficients& co,
+                                           const ContactSpheres& spheres, double r_eff,
                                            double overlap, const HertzMindlinParams& p,
                                            double max_overlap) {
-    if (p.yield_pressure > 0.0)
-        return thornton_ning_normal(p.e_star, r_eff, p.yield_pressure, overlap,
-                                    std::max(max_overlap, overlap));
+    if (p.yield_pressure > 0.0) {
+        const double deepest = std::max(max_overlap, overlap);
+        const HardenedYield y =
+            hardened_yield(agglomerate_hardening(p), p.yield_pressure, spheres, deepest);
+        return thornton_ning_normal(p.e_star, r_eff, y.pressure, overlap, deepest, y.slope);
+    }
     return {hertz_elastic_force(co, overlap), co.s_n};
+}
+
+/// The stability guard's normal stiffness bound at an overlap: the Hertz S_n, or the plastic
+/// line's slope where hardening (M-2.12) makes it steeper (up to ~2 S_n).
+inline double contact_stiffness_bound(const HertzMindlinCoefficients& co,
+                                      const ContactSpheres& spheres, double r_eff, double overlap,
+                                      const HertzMindlinParams& p) {
+    if (p.yield_pressure <= 0.0 || !agglomerate_hardening(p).hardens()) return co.s_n;
+    return std::max(co.s_n, contact_normal(co, spheres, r_eff, overlap, p, overlap).stiffness);
 }
 
 /// Contact state of the shared law below: overlap δ > 0, lever arms from the centres to the
@@ -107,6 +134,7 @@ inline ElasticPlasticNormal contact_normal(const HertzMindlinCoefficients& co, d
 struct ContactKinematics {
     Vec3 n;
     double overlap;          ///< δ [m]
+    ContactSpheres spheres;  ///< r_i, r_j (0: a plane)
     double r_eff, m_eff;     ///< R*, m*
     double lever_i, lever_j; ///< c_i, c_j [m] (M-2.3; c_j = 0 for the substrate)
     Vec3 v_rel;              ///< v_i - v_j
@@ -135,21 +163,24 @@ struct ContactHistory {
 
 /// Whether a contact at this overlap slides: its spring ξ sits at the Coulomb limit
 /// S_t |ξ| = μ F_n (as the law leaves it after a cut; F_n elastic, at rest), to rounding.
-inline bool hertz_mindlin_sliding(const HertzMindlinCoefficients& co, double r_eff, double overlap,
-                                  const HertzMindlinParams& p, const ContactHistory& h) {
+inline bool hertz_mindlin_sliding(const HertzMindlinCoefficients& co, const ContactSpheres& spheres,
+                                  double r_eff, double overlap, const HertzMindlinParams& p,
+                                  const ContactHistory& h) {
     const double f_coulomb =
-        p.friction * contact_normal(co, r_eff, overlap, p, h.max_overlap).force;
+        p.friction * contact_normal(co, spheres, r_eff, overlap, p, h.max_overlap).force;
     return co.s_t * norm(h.spring) >= (1.0 - 1e-6) * f_coulomb && norm2(h.spring) > 0.0;
 }
 
 /// The quasi-static step's stiffness of a contact (pair form): dF_n/dδ, and S_t while it sticks;
 /// a sliding contact resists no further tangential motion (its force stays μ F_n).
-inline PairResistance hertz_mindlin_tangent(const HertzMindlinCoefficients& co, double r_eff,
+inline PairResistance hertz_mindlin_tangent(const HertzMindlinCoefficients& co,
+                                            const ContactSpheres& spheres, double r_eff,
                                             double overlap, const HertzMindlinParams& p,
                                             const ContactHistory& h) {
-    const double s_n = contact_normal(co, r_eff, overlap, p, h.max_overlap).stiffness;
-    return {s_n, hertz_mindlin_sliding(co, r_eff, overlap, p, h) ? 0.0 : co.s_t, 0.0, 0.0, 0.0,
-            0.0};
+    const double s_n = contact_normal(co, spheres, r_eff, overlap, p, h.max_overlap).stiffness;
+    return {s_n, hertz_mindlin_sliding(co, spheres, r_eff, overlap, p, h) ? 0.0 : co.s_t,
+            0.0, 0.0,
+            0.0, 0.0};
 }
 
 /// Evaluates the Hertz-Mindlin law and advances the contact's history h by one step dt.
@@ -168,7 +199,7 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
     double f_elastic;
     if (p.yield_pressure > 0.0) {
         h.max_overlap = std::max(h.max_overlap, k.overlap);
-        f_elastic = contact_normal(co, k.r_eff, k.overlap, p, h.max_overlap).force;
+        f_elastic = contact_normal(co, k.spheres, k.r_eff, k.overlap, p, h.max_overlap).force;
     } else {
         f_elastic = hertz_elastic_force(co, k.overlap);
     }
@@ -221,9 +252,16 @@ inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& 
                                ContactHistory& history, double dt,
                                PairResistance* damping = nullptr) {
     const double overlap = -g.gap;
-    const ContactKinematics k{
-        g.n,     overlap,   g.r_eff,  g.m_eff, g.r_i - 0.5 * overlap, g.r_j - 0.5 * overlap,
-        g.v_rel, g.omega_i, g.omega_j};
+    const ContactKinematics k{g.n,
+                              overlap,
+                              {g.r_i, g.r_j},
+                              g.r_eff,
+                              g.m_eff,
+                              g.r_i - 0.5 * overlap,
+                              g.r_j - 0.5 * overlap,
+                              g.v_rel,
+                              g.omega_i,
+                              g.omega_j};
     const ContactForce c = hertz_mindlin_contact(k, p, history, dt);
     if (damping) {
         damping->normal += c.damping_n;
@@ -254,6 +292,10 @@ struct HertzMindlinLaw {
         ParamLimit<Params>{"friction", &Params::friction},
         ParamLimit<Params>{"rolling_friction", &Params::rolling_friction},
         ParamLimit<Params>{"yield_pressure", &Params::yield_pressure},
+        ParamLimit<Params>{"dense_yield_pressure", &Params::dense_yield_pressure},
+        ParamLimit<Params>{"agglomerate_porosity", &Params::agglomerate_porosity, 0.0, 1.0, false,
+                           true},
+        ParamLimit<Params>{"dense_porosity", &Params::dense_porosity, 0.0, 1.0, false, true},
         ParamLimit<Params>{"damping_n", &Params::damping_n},
         ParamLimit<Params>{"damping_t", &Params::damping_t}};
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
@@ -278,20 +320,26 @@ struct HertzMindlinLaw {
         if (closest.gap >= 0.0) return {};
         const HertzMindlinCoefficients co =
             hertz_mindlin_coefficients(closest.r_eff, -closest.gap, closest.m_eff, p);
-        return {co.s_n, co.s_t, 0.0, 0.0, 0.0, 0.0};
+        return {
+            contact_stiffness_bound(co, {closest.r_i, closest.r_j}, closest.r_eff, -closest.gap, p),
+            co.s_t,
+            0.0,
+            0.0,
+            0.0,
+            0.0};
     }
     /// The quasi-static step's resistance: γ_n, and γ_t unless the contact slides.
     static PairResistance resistance(const PairGeometry& g, const Params& p, const State& s) {
         if (g.gap >= 0.0) return {};
         const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, p);
-        const bool slides = hertz_mindlin_sliding(co, g.r_eff, -g.gap, p, s);
+        const bool slides = hertz_mindlin_sliding(co, {g.r_i, g.r_j}, g.r_eff, -g.gap, p, s);
         return {co.gamma_n, slides ? 0.0 : co.gamma_t, 0.0, 0.0, 0.0, 0.0};
     }
     /// The quasi-static step's stiffness: S_n, and S_t unless the contact slides.
     static PairResistance tangent(const PairGeometry& g, const Params& p, const State& s) {
         if (g.gap >= 0.0) return {};
         const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r_eff, -g.gap, g.m_eff, p);
-        return hertz_mindlin_tangent(co, g.r_eff, -g.gap, p, s);
+        return hertz_mindlin_tangent(co, {g.r_i, g.r_j}, g.r_eff, -g.gap, p, s);
     }
     /// Any component non-zero (four compares: most list slots are pairs out of reach, where the
     /// pair loop asks this every step).

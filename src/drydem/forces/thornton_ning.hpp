@@ -63,9 +63,13 @@ inline PlasticUnloading plastic_unloading(double e_star, double r_eff, double yi
 }
 
 /// The law's normal force at overlap δ after a deepest overlap max_overlap (≥ δ; the caller keeps
-/// it). Without plasticity (p_y = 0) the Hertz force.
+/// it). Without plasticity (p_y = 0) the Hertz force. A p_y that hardens with δ_max
+/// (agglomerate_hardening.hpp, M-2.12) comes as its value at δ_max and its slope dp_y/dδ_max: the
+/// plastic line F_y + π p_y R* (δ − δ_y) = π p_y R* (δ − δ_y / 3) then stiffens by
+/// ∂F/∂p_y dp_y/dδ = π R* (δ − δ_y) dp_y/dδ while it loads.
 inline ElasticPlasticNormal thornton_ning_normal(double e_star, double r_eff, double yield_pressure,
-                                                 double overlap, double max_overlap) {
+                                                 double overlap, double max_overlap,
+                                                 double yield_slope = 0.0) {
     if (overlap <= 0.0) return {};
     if (yield_pressure <= 0.0) return hertz_normal(e_star, r_eff, overlap);
     const double d_y = yield_overlap(e_star, r_eff, yield_pressure);
@@ -73,7 +77,8 @@ inline ElasticPlasticNormal thornton_ning_normal(double e_star, double r_eff, do
     if (overlap >= max_overlap) {                                        // plastic loading
         const double f_y = hertz_normal(e_star, r_eff, d_y).force;
         const double slope = std::numbers::pi * yield_pressure * r_eff;
-        return {f_y + slope * (overlap - d_y), slope};
+        return {f_y + slope * (overlap - d_y),
+                slope + std::numbers::pi * r_eff * (overlap - d_y) * yield_slope};
     }
     const PlasticUnloading u = plastic_unloading(e_star, r_eff, yield_pressure, max_overlap);
     return hertz_normal(e_star, u.radius, overlap - u.residual);

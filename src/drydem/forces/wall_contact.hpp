@@ -40,8 +40,8 @@ inline BodyResistance wall_resistance(double a_n, double a_t, double lever, cons
         s = {};
         return;
     }
-    const ContactKinematics k{
-        Vec3{0.0, 0.0, w.side}, overlap, g.r, g.mass, g.r - overlap, 0.0, g.v, g.omega, {}};
+    const ContactKinematics k{Vec3{0.0, 0.0, w.side}, overlap, {g.r, 0.0}, g.r,     g.mass,
+                              g.r - overlap,          0.0,     g.v,        g.omega, {}};
     const ContactForce c = hertz_mindlin_contact(k, p, s, dt);
     if (damping) *damping += wall_resistance(c.damping_n, c.damping_t, k.lever_i, w);
     f += BodyForce{c.force_i, c.torque_i};
@@ -54,7 +54,8 @@ inline BodyResistance wall_contact_bound(const BodyGeometry& g, const HertzMindl
     const double overlap = wall_overlap(g, w, g.reach);
     if (overlap <= 0.0 || p.e_star == 0.0) return {};
     const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r, overlap, g.mass, p);
-    return springs ? wall_resistance(co.s_n, co.s_t, g.r - overlap, w)
+    return springs ? wall_resistance(contact_stiffness_bound(co, {g.r, 0.0}, g.r, overlap, p),
+                                     co.s_t, g.r - overlap, w)
                    : wall_resistance(co.gamma_n, co.gamma_t, g.r - overlap, w);
 }
 
@@ -66,10 +67,10 @@ inline BodyResistance wall_contact_kept(const BodyGeometry& g, const HertzMindli
     if (overlap <= 0.0 || p.e_star == 0.0) return {};
     const HertzMindlinCoefficients co = hertz_mindlin_coefficients(g.r, overlap, g.mass, p);
     if (springs) {
-        const PairResistance k = hertz_mindlin_tangent(co, g.r, overlap, p, s);
+        const PairResistance k = hertz_mindlin_tangent(co, {g.r, 0.0}, g.r, overlap, p, s);
         return wall_resistance(k.normal, k.sliding, g.r - overlap, w);
     }
-    const bool slides = hertz_mindlin_sliding(co, g.r, overlap, p, s);
+    const bool slides = hertz_mindlin_sliding(co, {g.r, 0.0}, g.r, overlap, p, s);
     return wall_resistance(co.gamma_n, slides ? 0.0 : co.gamma_t, g.r - overlap, w);
 }
 
