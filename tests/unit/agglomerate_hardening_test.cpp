@@ -132,6 +132,7 @@ TEST(AgglomerateHardening, ContactLawFollowsTheHardenedPlasticLine) {
     p.agglomerate_porosity = 0.75;
     p.dense_porosity = 0.38;
     p.agglomerates = AgglomerateSides::i;
+    p.agglomerate_compliance_share = (1 - 0.3 * 0.3) / 2e9 * p.e_star;
     HertzMindlinParams plain = p;
     plain.dense_yield_pressure = 0.0;
     const ContactSpheres s{kRcb, kRncm};
@@ -145,19 +146,49 @@ TEST(AgglomerateHardening, ContactLawFollowsTheHardenedPlasticLine) {
         const double d = f * kRcb;
         const HardenedYield y = hardened_yield(agglomerate_hardening(p), kPy0, s, d);
         const ElasticPlasticNormal n = normal(p, d, d);
-        expect_rel(n.force, thornton_ning_normal(p.e_star, r_eff, y.pressure, d, d).force, 1e-12);
+        expect_rel(n.force,
+                   thornton_ning_normal(p.e_star * y.modulus_factor, r_eff, y.pressure, d, d).force,
+                   1e-12);
         EXPECT_GT(n.force, normal(plain, d, d).force);
         const double h = 1e-6 * d;
+        // The stiffness leaves out how the hardening modulus moves δ_y (< 1 % here).
         expect_rel(n.stiffness,
-                   (normal(p, d + h, d + h).force - normal(p, d - h, d - h).force) / (2 * h), 1e-4);
+                   (normal(p, d + h, d + h).force - normal(p, d - h, d - h).force) / (2 * h), 1e-2);
         // The guard's bound covers the loading slope.
         const HertzMindlinCoefficients co = hertz_mindlin_coefficients(r_eff, d, m, p);
         EXPECT_GE(contact_stiffness_bound(co, s, r_eff, d, p), n.stiffness);
-        // Unloading from δ_max: continuous there, softer below, with a permanent set.
+        // Unloading from δ_max: continuous there, softer below, with a permanent set; its slope
+        // (the hardened modulus' Hertz slope) within the guard's bound too.
         expect_rel(normal(p, d, 1.0000001 * d).force, n.force, 1e-5);
+        EXPECT_GE(contact_stiffness_bound(co, s, r_eff, d, p),
+                  (normal(p, d, d).force - normal(p, d - h, d).force) / h * (1 - 1e-3));
         EXPECT_LT(normal(p, 0.9 * d, d).force, n.force);
         EXPECT_EQ(normal(p, 0.05 * d, d).force, 0.0);
     }
+}
+
+/// Gibson-Ashby: the agglomerate's modulus grows as its relative density squared, so a dense
+/// contact gives back less of its overlap on unloading than one whose modulus stayed loose.
+TEST(AgglomerateHardening, ModulusHardensWithTheDensityAndTheSpringbackFalls) {
+    AgglomerateHardening h = hardening(AgglomerateSides::i);
+    h.compliance_share = 0.9; // the CB's share of 1/E* against a stiff partner
+    EXPECT_DOUBLE_EQ(hardened_modulus_factor(h, 0.75, 0.75), 1.0);
+    // At ε_min: ρ = 0.62 / 0.25 = 2.48; 1/E* = 1/E*_0 (0.1 + 0.9 / ρ²).
+    const double rho = 0.62 / 0.25;
+    expect_rel(hardened_modulus_factor(h, 0.38, 0.75), 1.0 / (0.1 + 0.9 / (rho * rho)), 1e-12);
+    // Two agglomerates, each half of the compliance.
+    h.compliance_share = 0.5;
+    expect_rel(hardened_modulus_factor(h, 0.38, 0.38), rho * rho, 1e-12);
+    // Deep on a plane the modulus has risen; the unloading's recovered overlap falls.
+    h.compliance_share = 0.9;
+    const ContactSpheres plane{kRcb, 0.0};
+    const HardenedYield deep = hardened_yield(h, kPy0, plane, 1.0 * kRcb);
+    EXPECT_GT(deep.modulus_factor, 2.0);
+    const double e_star = 2.2e9, d = 1.0 * kRcb;
+    const double recovered_hard =
+        d - plastic_unloading(e_star * deep.modulus_factor, kRcb, deep.pressure, d).residual;
+    const double recovered_loose = d - plastic_unloading(e_star, kRcb, deep.pressure, d).residual;
+    EXPECT_LT(recovered_hard, 0.6 * recovered_loose);
 }
 
 /// The calendering force field: every contact with a CB sphere hardens, on the CB's side(s);
@@ -178,6 +209,10 @@ TEST(AgglomerateHardening, CalenderingForceFieldHardensTheCbContactsOnly) {
                 EXPECT_EQ(hm.dense_yield_pressure, kPd);
                 EXPECT_EQ(hm.agglomerate_porosity, c.cb_porosity);
                 EXPECT_EQ(hm.dense_porosity, agglomerate_binder_porosity(c));
+                // Two CB spheres hold half of the contact's compliance each; against NCM almost
+                // all of it.
+                EXPECT_NEAR(hm.agglomerate_compliance_share,
+                            want == AgglomerateSides::both ? 0.5 : 0.98, 0.02);
             }
         }
         const auto side = i == cb ? AgglomerateSides::i : AgglomerateSides::none;

@@ -154,7 +154,8 @@ double contact_yield_pressure(const Config& c, double e_star, bool with_cb) {
 namespace {
 /// M-2.12: a contact with CB sphere(s) on `sides` hardens from its p_y toward
 /// calendering.cb_dense_yield_pressure as its lens compacts the agglomerate(s).
-void set_hardening(HertzMindlinParams& p, const Config& c, AgglomerateSides sides) {
+void set_hardening(HertzMindlinParams& p, const Config& c, double cb_modulus,
+                   AgglomerateSides sides) {
     if (c.cb_dense_yield_pressure <= 0.0 || sides == AgglomerateSides::none) return;
     if (p.yield_pressure <= 0.0)
         throw InputError(fmt::format(
@@ -174,6 +175,10 @@ void set_hardening(HertzMindlinParams& p, const Config& c, AgglomerateSides side
     p.agglomerate_porosity = a.initial_porosity;
     p.dense_porosity = a.minimal_porosity;
     p.agglomerates = sides;
+    // (1 − ν²)/E_CB over the pair's 1/E*: the agglomerate's share of the contact's compliance,
+    // 1/2 between two of them (M-2.12: its modulus hardens with its density).
+    p.agglomerate_compliance_share =
+        (1.0 - c.poisson_ratio * c.poisson_ratio) / cb_modulus * p.e_star;
 }
 } // namespace
 
@@ -199,15 +204,17 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
         const AgglomerateSides on_i = a.is_cb ? AgglomerateSides::i : AgglomerateSides::none;
         plate.yield_pressure = contact_yield_pressure(c, plate.e_star, a.is_cb);
         substrate.yield_pressure = contact_yield_pressure(c, substrate.e_star, a.is_cb);
-        set_hardening(plate, c, on_i);
-        set_hardening(substrate, c, on_i);
+        const double cb_modulus =
+            youngs_modulus(c, recipe.species[std::size_t(recipe.cb_species())]);
+        set_hardening(plate, c, cb_modulus, on_i);
+        set_hardening(substrate, c, cb_modulus, on_i);
         law<PlateContactLaw>(ff.body[std::size_t(i)]) = plate;
         for (int j = 0; j < n; ++j) {
             HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair[std::size_t(i * n + j)]);
             const bool j_cb = recipe.species[std::size_t(j)].is_cb;
             hm.yield_pressure = contact_yield_pressure(c, hm.e_star, a.is_cb || j_cb);
             set_hardening(
-                hm, c,
+                hm, c, cb_modulus,
                 AgglomerateSides(std::uint8_t(on_i) | std::uint8_t(j_cb ? AgglomerateSides::j
                                                                         : AgglomerateSides::none)));
         }

@@ -7,8 +7,13 @@
 //           are agglomerates, the whole lens when its partner is dense (NCM, a wall)
 //   ε(δ)  = 1 − (1 − ε_0) V / (V − V_l)                   solid kept in the rest of the envelope
 //   p_y(δ) = p_y0 + (p_d − p_y0) (ε_0 − max(ε, ε_min)) / (ε_0 − ε_min)
+//   1/E*(δ) = (1/E*_0) (1 − Σ s_k + Σ s_k / ρ_k²),  ρ_k = (1 − ε_k) / (1 − ε_0)
 // p_y rises from the loose agglomerate's p_y0 to the dense carbon-binder domain's p_d as the
-// lens compacts it to ε_min, and stays there: the dense domain flows at p_d. Linear in the
+// lens compacts it to ε_min, and stays there: the dense domain flows at p_d. Its modulus rises
+// with its relative density ρ as an open-cell porous body's, E ∝ ρ² (Gibson and Ashby,
+// Cellular Solids, 1997): s_k is agglomerate k's share of the loose contact's compliance 1/E*_0,
+// (1 − ν²)/E_CB × E*_0. Without it the unloading, which gives back ∝ p_y / E* of the overlap
+// (M-2.8), would spring back more the harder the contact became. Linear in the
 // compaction because the inverse of the compaction curve (M-2.11), p ∝ ln((ε_0 − ε_min) /
 // (ε − ε_min)), diverges at ε_min: its slope passes the Hertz slope by orders of magnitude just
 // before it, which no explicit contact step follows (measured in model.md M-2.12). With two
@@ -31,6 +36,7 @@ struct AgglomerateHardening {
     double minimal_porosity = 0.0;     ///< ε_min < ε_0, the densest carbon-binder domain
     double dense_yield_pressure = 0.0; ///< p_d [Pa], ≥ p_y0
     AgglomerateSides sides = AgglomerateSides::none;
+    double compliance_share = 0.0; ///< s: each agglomerate side's share of 1/E*_0, in [0, 1]
 
     [[nodiscard]] bool hardens() const {
         return dense_yield_pressure > 0.0 && sides != AgglomerateSides::none;
@@ -89,29 +95,46 @@ inline LensPorosity lens_porosity(const AgglomerateHardening& h, double radius, 
     return {1.0 - solid * v / left, -solid * v / (left * left) * lens_rate};
 }
 
-/// The contact's limiting pressure at its deepest overlap δ_max and dp_y/dδ_max (Pa, Pa/m).
+/// The contact's limiting pressure at its deepest overlap δ_max and dp_y/dδ_max (Pa, Pa/m), and
+/// E*(δ_max) / E*_0.
 struct HardenedYield {
     double pressure = 0.0;
     double slope = 0.0;
+    double modulus_factor = 1.0;
 };
+
+/// E* / E*_0 with agglomerate sides at porosities ε_i, ε_j (a side that is not one: ε_0).
+inline double hardened_modulus_factor(const AgglomerateHardening& h, double porosity_i,
+                                      double porosity_j) {
+    auto softening = [&](double porosity) { // s (1/ρ² − 1) of one side
+        const double rho = (1.0 - porosity) / (1.0 - h.initial_porosity);
+        return h.compliance_share * (1.0 / (rho * rho) - 1.0);
+    };
+    return 1.0 / (1.0 + softening(porosity_i) + softening(porosity_j));
+}
 inline HardenedYield hardened_yield(const AgglomerateHardening& h, double yield_pressure,
                                     const ContactSpheres& s, double max_overlap) {
     if (!h.hardens() || max_overlap <= 0.0) return {yield_pressure, 0.0};
     const LensCaps c = lens_caps(s, max_overlap);
     const bool both = h.sides == AgglomerateSides::both;
     const double lens = c.cap_i + c.cap_j, rate = c.rate_i + c.rate_j;
-    LensPorosity e{-1.0, 0.0}; // the softer agglomerate: the larger ε
-    if (h.sides != AgglomerateSides::j)
-        e = lens_porosity(h, s.r_i, both ? c.cap_i : lens, both ? c.rate_i : rate);
-    if (h.sides != AgglomerateSides::i) {
-        const LensPorosity e_j =
-            lens_porosity(h, s.r_j, both ? c.cap_j : lens, both ? c.rate_j : rate);
-        if (e_j.porosity > e.porosity) e = e_j;
-    }
+    const LensPorosity loose{h.initial_porosity, 0.0};
+    const LensPorosity e_i =
+        h.sides == AgglomerateSides::j
+            ? loose
+            : lens_porosity(h, s.r_i, both ? c.cap_i : lens, both ? c.rate_i : rate);
+    const LensPorosity e_j =
+        h.sides == AgglomerateSides::i
+            ? loose
+            : lens_porosity(h, s.r_j, both ? c.cap_j : lens, both ? c.rate_j : rate);
+    // The softer agglomerate (the larger ε) sets p_y.
+    const bool i_sets = h.sides == AgglomerateSides::i ||
+                        (h.sides == AgglomerateSides::both && e_i.porosity >= e_j.porosity);
+    const LensPorosity& e = i_sets ? e_i : e_j;
     const double per_porosity =
         (h.dense_yield_pressure - yield_pressure) / (h.initial_porosity - h.minimal_porosity);
     return {yield_pressure + per_porosity * (h.initial_porosity - e.porosity),
-            -per_porosity * e.rate};
+            -per_porosity * e.rate, hardened_modulus_factor(h, e_i.porosity, e_j.porosity)};
 }
 
 } // namespace drydem

@@ -35,6 +35,7 @@ struct HertzMindlinParams {
     double dense_yield_pressure = 0.0;
     double agglomerate_porosity = 0.0, dense_porosity = 0.0;
     AgglomerateSides agglomerates = AgglomerateSides::none;
+    double agglomerate_compliance_share = 0.0; ///< each agglomerate's share of 1/E*, in [0, 1]
     /// Derived: 2 sqrt(5/6) β sqrt(2 E*) and 2 sqrt(5/6) β sqrt(8 G*), so that
     /// γ_n = damping_n (R* δ)^{1/4} sqrt(m*) and γ_t = damping_t (R* δ)^{1/4} sqrt(m*) (M-2.1)
     /// cost one square root per contact. Set by mix_hertz_mindlin.
@@ -83,7 +84,8 @@ inline HertzMindlinParams mix_hertz_mindlin(double e_i, double nu_i, double e_j,
 
 /// The hardening of the pair's limiting pressure (M-2.12).
 inline AgglomerateHardening agglomerate_hardening(const HertzMindlinParams& p) {
-    return {p.agglomerate_porosity, p.dense_porosity, p.dense_yield_pressure, p.agglomerates};
+    return {p.agglomerate_porosity, p.dense_porosity, p.dense_yield_pressure, p.agglomerates,
+            p.agglomerate_compliance_share};
 }
 
 /// Stiffnesses and damping coefficients of a contact with overlap δ (M-2.1); shared by the law,
@@ -115,18 +117,23 @@ inline ElasticPlasticNormal contact_normal(const HertzMindlinCoefficients& co,
         const double deepest = std::max(max_overlap, overlap);
         const HardenedYield y =
             hardened_yield(agglomerate_hardening(p), p.yield_pressure, spheres, deepest);
-        return thornton_ning_normal(p.e_star, r_eff, y.pressure, overlap, deepest, y.slope);
+        return thornton_ning_normal(p.e_star * y.modulus_factor, r_eff, y.pressure, overlap,
+                                    deepest, y.slope);
     }
     return {hertz_elastic_force(co, overlap), co.s_n};
 }
 
-/// The stability guard's normal stiffness bound at an overlap: the Hertz S_n, or the plastic
-/// line's slope where hardening (M-2.12) makes it steeper (up to ~2 S_n).
+/// The stability guard's normal stiffness bound at an overlap: the Hertz S_n, or with hardening
+/// (M-2.12) the larger of the Hertz S_n at the hardened modulus (the unloading slope) and the
+/// plastic line's slope.
 inline double contact_stiffness_bound(const HertzMindlinCoefficients& co,
                                       const ContactSpheres& spheres, double r_eff, double overlap,
                                       const HertzMindlinParams& p) {
     if (p.yield_pressure <= 0.0 || !agglomerate_hardening(p).hardens()) return co.s_n;
-    return std::max(co.s_n, contact_normal(co, spheres, r_eff, overlap, p, overlap).stiffness);
+    const HardenedYield y =
+        hardened_yield(agglomerate_hardening(p), p.yield_pressure, spheres, overlap);
+    return std::max(co.s_n * y.modulus_factor,
+                    contact_normal(co, spheres, r_eff, overlap, p, overlap).stiffness);
 }
 
 /// Contact state of the shared law below: overlap δ > 0, lever arms from the centres to the
@@ -296,6 +303,8 @@ struct HertzMindlinLaw {
         ParamLimit<Params>{"agglomerate_porosity", &Params::agglomerate_porosity, 0.0, 1.0, false,
                            true},
         ParamLimit<Params>{"dense_porosity", &Params::dense_porosity, 0.0, 1.0, false, true},
+        ParamLimit<Params>{"agglomerate_compliance_share", &Params::agglomerate_compliance_share,
+                           0.0, 1.0},
         ParamLimit<Params>{"damping_n", &Params::damping_n},
         ParamLimit<Params>{"damping_t", &Params::damping_t}};
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
