@@ -33,11 +33,18 @@ int run_calender(const CalenderCommand& cmd) {
     prepare_output_folder(o.output_dir, calender_output(), cmd.overwrite);
     const CalenderResult r = run_calendering(c, o);
     if (o.plots) run_plot_script("plot_calender.py", o.output_dir);
-    fmt::print(
-        "dried {:.3f} um (porosity {:.4f}) -> peak {:.3f} MPa at {:.3f} um (porosity {:.4f}) "
-        "-> unloaded {:.3f} um (porosity {:.4f}, springback {:.2f} %)\n",
-        r.dried_thickness * 1e6, r.dried_porosity, r.peak_pressure * 1e-6, r.peak_thickness * 1e6,
-        r.peak_porosity, r.unloaded_thickness * 1e6, r.unloaded_porosity, 100.0 * r.springback);
+    if (r.completed)
+        fmt::print(
+            "dried {:.3f} um (porosity {:.4f}) -> peak {:.3f} MPa at {:.3f} um (porosity {:.4f}) "
+            "-> unloaded {:.3f} um (porosity {:.4f}, springback {:.2f} %)\n",
+            r.dried_thickness * 1e6, r.dried_porosity, r.peak_pressure * 1e-6,
+            r.peak_thickness * 1e6, r.peak_porosity, r.unloaded_thickness * 1e6,
+            r.unloaded_porosity, 100.0 * r.springback);
+    else // a stopped run has no peak or unloaded state: say how far it got, not zeros
+        fmt::print(
+            "dried {:.3f} um (porosity {:.4f}) -> stopped before the end, at most {:.3f} MPa "
+            "reached (compaction.csv holds the curve so far)\n",
+            r.dried_thickness * 1e6, r.dried_porosity, r.peak_pressure * 1e-6);
     fmt::print("{} in {} steps, {:.1f} s; written to {}\n", r.completed ? "completed" : "stopped",
                r.steps, r.wall_time, o.output_dir.string());
     if (!r.completed) fmt::print(stderr, "error: {}\n", r.error);

@@ -560,11 +560,15 @@ void CalenderRun::finish() {
     }
     write_file_atomically(o_.output_dir / "summary.json",
                           [&](std::ostream& os) { os << s.dump(2) << "\n"; });
-    log_->info("{}: peak {:.4g} MPa at {:.4g} um (porosity {:.4f}); unloaded {:.4g} um (porosity "
-               "{:.4f}, springback {:.2f} %); {} steps in {:.1f} s",
-               r_.completed ? "completed" : "stopped", r_.peak_pressure * 1e-6,
-               r_.peak_thickness * 1e6, r_.peak_porosity, r_.unloaded_thickness * 1e6,
-               r_.unloaded_porosity, 100.0 * r_.springback, r_.steps, r_.wall_time);
+    if (r_.completed)
+        log_->info("completed: peak {:.4g} MPa at {:.4g} um (porosity {:.4f}); unloaded {:.4g} um "
+                   "(porosity {:.4f}, springback {:.2f} %); {} steps in {:.1f} s",
+                   r_.peak_pressure * 1e-6, r_.peak_thickness * 1e6, r_.peak_porosity,
+                   r_.unloaded_thickness * 1e6, r_.unloaded_porosity, 100.0 * r_.springback,
+                   r_.steps, r_.wall_time);
+    else
+        log_->info("stopped before the end, at most {:.4g} MPa reached; {} steps in {:.1f} s",
+                   r_.peak_pressure * 1e-6, r_.steps, r_.wall_time);
 }
 
 json CalenderRun::summary() const {
