@@ -195,6 +195,7 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
     ff.set_body_law<GravityBuoyancyLaw>({c.gravity, 0.0, 0.0});
     ff.set_body_law<CapillaryFrontLaw>({0.0, c.contact_angle});
     const int n = ff.species_count;
+    const double cb_modulus = youngs_modulus(c, recipe.species[std::size_t(recipe.cb_species())]);
     for (int i = 0; i < n; ++i) {
         const SizeClass& a = recipe.species[std::size_t(i)];
         HertzMindlinParams plate =
@@ -204,8 +205,6 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
         const AgglomerateSides on_i = a.is_cb ? AgglomerateSides::i : AgglomerateSides::none;
         plate.yield_pressure = contact_yield_pressure(c, plate.e_star, a.is_cb);
         substrate.yield_pressure = contact_yield_pressure(c, substrate.e_star, a.is_cb);
-        const double cb_modulus =
-            youngs_modulus(c, recipe.species[std::size_t(recipe.cb_species())]);
         set_hardening(plate, c, cb_modulus, on_i);
         set_hardening(substrate, c, cb_modulus, on_i);
         law<PlateContactLaw>(ff.body[std::size_t(i)]) = plate;

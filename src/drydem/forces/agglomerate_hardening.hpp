@@ -13,14 +13,15 @@
 // with its relative density ρ as an open-cell porous body's, E ∝ ρ² (Gibson and Ashby,
 // Cellular Solids, 1997): s_k is agglomerate k's share of the loose contact's compliance 1/E*_0,
 // (1 − ν²)/E_CB × E*_0. Without it the unloading, which gives back ∝ p_y / E* of the overlap
-// (M-2.8), would spring back more the harder the contact became. Linear in the
-// compaction because the inverse of the compaction curve (M-2.11), p ∝ ln((ε_0 − ε_min) /
+// (M-2.8), would spring back more the harder the contact became.
+// p_y is linear in the compaction because the inverse of the compaction curve (M-2.11), p ∝ ln((ε_0 − ε_min) /
 // (ε − ε_min)), diverges at ε_min: its slope passes the Hertz slope by orders of magnitude just
 // before it, which no explicit contact step follows (measured in model.md M-2.12). With two
 // agglomerates the softer one (the larger ε) sets the pressure. ε_0 is the as-dried porosity:
 // an agglomerate that its mean stress already compacted (M-2.11) hardens from its new envelope
 // as if it were loose, a lower bound of its hardening.
 #pragma once
+#include "drydem/core/sphere.hpp"
 #include <algorithm>
 #include <cstdint>
 #include <numbers>
@@ -87,7 +88,7 @@ struct LensPorosity {
 };
 inline LensPorosity lens_porosity(const AgglomerateHardening& h, double radius, double lens,
                                   double lens_rate) {
-    const double v = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+    const double v = sphere_volume(radius);
     const double solid = 1.0 - h.initial_porosity;
     // ε = ε_min at V_l = V (1 − (1 − ε_0) / (1 − ε_min)).
     if (lens >= v * (1.0 - solid / (1.0 - h.minimal_porosity))) return {h.minimal_porosity, 0.0};
