@@ -10,6 +10,7 @@
 #include "drydem/drying/analysis_inputs.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/drying/derived_checks.hpp"
+#include "drydem/drying/law_parameters.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/setup/formulation.hpp"
 #include "drydem/setup/insertion.hpp"
@@ -283,6 +284,45 @@ TEST(CalenderEndToEnd, HardeningCbContactsStopTheAgglomeratesBeingPressedThrough
     const nlohmann::json s = summary_of(hard_out);
     EXPECT_NEAR(s["peak"]["pressure_MPa"].get<double>(), 5.0, 0.25);
     EXPECT_TRUE(s["unloaded"]["at_rest"].get<bool>());
+}
+
+TEST(CalenderEndToEnd, ExtrudedAgglomeratesPassOnTheirSolidAndLeave) {
+    // Soft CB contacts (p_y0 1 MPa) under 5 MPa: NCM particles press CB spheres past their
+    // densest state (model.md M-2.13; seeds 1-4 extruded 341-382 of them). Each one's solid goes
+    // into the pores of the nearest agglomerates, which stay at or above their densest porosity;
+    // the film keeps its mass and its carbon, and loses the extruded spheres.
+    const Config c =
+        small_film({"calendering.target_pressure=5MPa", "calendering.cb_yield_pressure=1MPa",
+                    "numerics.overlap_limit=1.5", "calendering.cb_extrusion=true"});
+    const auto [run, out] = folders_for(c);
+    const CalenderResult r = run_calendering(c, {run, out, true, false, std::nullopt});
+    ASSERT_TRUE(r.completed) << r.error;
+    const nlohmann::json s = summary_of(out);
+    const std::size_t extruded = s["cb_extrusion"]["agglomerates"].get<std::size_t>();
+    EXPECT_GT(extruded, 50u);
+    EXPECT_GT(s["cb_extrusion"]["mass_share_of_cb"].get<double>(), 0.0);
+    const std::vector<double> column_extruded = column(out / "compaction.csv", "cb_extruded");
+    EXPECT_EQ(column_extruded.back(), double(extruded));
+    const ParticleFile before = read_particles(run / "final.csv"),
+                       after = read_particles(out / "final.csv");
+    EXPECT_EQ(after.particles.size() + extruded, before.particles.size());
+    EXPECT_NEAR(total_mass(out / "final.csv") / total_mass(run / "final.csv"), 1.0, 1e-12);
+    const auto dried = analysis::structure_from_file(before, file_defaults(c));
+    const auto pressed = analysis::structure_from_file(after, file_defaults(c));
+    EXPECT_NEAR(analysis::masses(pressed).cb_carbon / analysis::masses(dried).cb_carbon, 1.0, 1e-9);
+    // No receiver was filled past the densest carbon-binder domain.
+    const FilmRecipe recipe = make_recipe(c);
+    const double minimal = agglomerate_extrusion(c).minimal_porosity;
+    int denser = 0, fuller = 0;
+    for (const ParticleRecord& p : after.particles) {
+        if (!recipe.species[std::size_t(p.type - 1)].is_cb) continue;
+        const double e =
+            agglomerate_porosity(c.cb_porosity, p.density, recipe.cb_effective_density);
+        if (e < minimal - 1e-9) ++fuller;
+        if (e < c.cb_porosity - 1e-9) ++denser;
+    }
+    EXPECT_EQ(fuller, 0);
+    EXPECT_GT(denser, 0) << "the receivers took the solid into their pores";
 }
 
 TEST(CalenderEndToEnd, RefusesAMinimalPorosityAboveTheDriedOneOrBelowTheBinders) {

@@ -127,8 +127,9 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
     // The spheres (NCM and CB envelopes) fill the whole gap at this height (docs/calendering.md);
     // compacting agglomerates lower it to their densest state (model.md M-2.11).
     const AgglomerateCompactionParams cbd = agglomerate_compaction(c);
-    const double spheres =
-        cbd.compacts() ? r.sphere_height(cbd.minimal_porosity) : r.sphere_height();
+    const AgglomerateExtrusionParams extrusion = agglomerate_extrusion(c);
+    const bool densest = cbd.compacts() || extrusion.on; // the CB solid can fill the pores
+    const double spheres = densest ? r.sphere_height(cbd.minimal_porosity) : r.sphere_height();
     if (cbd.compacts())
         fmt::print("  CB agglomerates compact: inner porosity {:.3g} + ({:.3g} - {:.3g}) "
                    "exp(-sigma / {:.4g} MPa), as dried their own height {:.4g} um\n",
@@ -136,7 +137,7 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
                    cbd.pressure * 1e-6, r.sphere_height() * 1e6);
     fmt::print("  spheres' own height {:.4g} um{}: they fill the gap at porosity {:.3g} (lower "
                "targets are refused)\n",
-               spheres * 1e6, cbd.compacts() ? " (agglomerates at their densest)" : "",
+               spheres * 1e6, densest ? " (agglomerates at their densest)" : "",
                coating_density(r.dry_mass / r.base_area, spheres, r.solids_density).porosity);
     if (c.cb_density_scaling != 1.0)
         fmt::print(
@@ -162,6 +163,12 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
         fmt::print("  CB contacts harden to p_y {:.3g} GPa as their lens compacts the agglomerate "
                    "from inner porosity {:.3g} to {:.3g} (model.md M-2.12)\n",
                    h.dense_yield_pressure * 1e-9, h.agglomerate_porosity, h.dense_porosity);
+    if (extrusion.on)
+        fmt::print("  a CB sphere that NCM particles and walls press past its densest state (their "
+                   "lenses over {:.3g} of it) flows out: its solid fills the nearest agglomerates' "
+                   "pores down to {:.3g} (model.md M-2.13)\n",
+                   densest_lens_fraction(extrusion.initial_porosity, extrusion.minimal_porosity),
+                   extrusion.minimal_porosity);
     fmt::print(
         "  CB spheres E = {:.3g} GPa, plate E = {:.3g} GPa\n",
         (c.calender_cb_youngs_modulus > 0 ? c.calender_cb_youngs_modulus : c.cb_youngs_modulus) *

@@ -17,7 +17,8 @@
 //      last plate frames of a dynamic run still see it rising.
 //   7. end: final.csv, summary.json with the fitted compaction curve, the structure analysis.
 // From the load on, every kCompactionEvery steps the CB agglomerates compact under their mean
-// stress (calendering.cb_compaction_pressure, model.md M-2.11).
+// stress (calendering.cb_compaction_pressure, model.md M-2.11), and those that dense partners
+// pressed past their densest state flow out of the gap (calendering.cb_extrusion, M-2.13).
 // A row of compaction.csv every calendering.record_every of plate travel.
 #include "drydem/calendering/calender_run.hpp"
 #include "drydem/analysis/analyze.hpp"
@@ -125,8 +126,9 @@ private:
     /// The lowest height the spheres can fill: the agglomerates at calendering.cb_minimal_porosity
     /// where they compact, as dried where they do not.
     [[nodiscard]] double densest_sphere_height() const {
-        return compaction_.compacts() ? film_.recipe.sphere_height(compaction_.minimal_porosity)
-                                      : film_.recipe.sphere_height();
+        return compaction_.compacts() || extrusion_.on
+                   ? film_.recipe.sphere_height(compaction_.minimal_porosity)
+                   : film_.recipe.sphere_height();
     }
     /// The inner porosity of CB sphere i (M-2.11: from its density, the mass kept).
     [[nodiscard]] double inner_porosity(std::size_t i) const {
@@ -136,6 +138,12 @@ private:
     /// The CB agglomerates' inner porosity over all of them: 1 - carbon / envelope volume.
     [[nodiscard]] double cb_inner_porosity() const;
     void compact_agglomerates();
+    void extrude_agglomerates();
+    /// Extruded agglomerate g's solid and mass to the nearest agglomerates with pore room.
+    void pass_on_solid(std::size_t g, const std::vector<char>& leaving);
+    [[nodiscard]] bool is_cb(std::size_t i) const {
+        return film_.recipe.species[sim_->particles().species[i]].is_cb;
+    }
     /// I = (v / h) d sqrt(ρ / p) of the most inert sphere at plate height h and pressure p.
     [[nodiscard]] double inertial_number(double h, double p) const {
         return speed_ / h * inertia_scale_ / std::sqrt(p);
@@ -180,6 +188,10 @@ private:
     bool settled_ = false;
     double speed_; ///< calendering.plate_speed [m/s]
     AgglomerateCompactionParams compaction_;
+    AgglomerateExtrusionParams extrusion_;
+    std::size_t extruded_ = 0, extruded_bonds_ = 0; ///< agglomerates, and their intact bonds
+    double extruded_mass_ = 0.0;                    ///< [kg]
+    double cb_mass_ = 0.0;                          ///< the CB agglomerates' mass as dried [kg]
     /// max over the species of d sqrt(ρ), ρ with calendering.cb_density_scaling: the inertial
     /// number I = (v / h) d sqrt(ρ / p) of the most inert sphere is this times v / (h sqrt(p)).
     double inertia_scale_ = 0.0;
@@ -207,6 +219,7 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
       settle_force_(c.calender_settle_tolerance * film_.box.area() /
                     double(std::max<std::size_t>(sim_->particles().size(), 1))),
       speed_(c.calender_plate_speed), compaction_(agglomerate_compaction(c)),
+      extrusion_(agglomerate_extrusion(c)),
       csv_(o.output_dir / "compaction.csv", {"time_s",           "phase",
                                              "plate_height_um",  "pressure_MPa",
                                              "porosity",         "film_top_um",
@@ -216,7 +229,8 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
                                              "bonds_broken",     "cb_inner_porosity",
                                              "stress_xx_MPa",    "stress_yy_MPa",
                                              "stress_zz_MPa",    "stress_xy_MPa",
-                                             "stress_xz_MPa",    "stress_yz_MPa"}) {
+                                             "stress_xz_MPa",    "stress_yz_MPa",
+                                             "cb_extruded"}) {
     for (const SizeClass& s : film_.recipe.species)
         inertia_scale_ =
             std::max(inertia_scale_, s.diameter * std::sqrt(s.density * mass_scaling(s)));
@@ -256,7 +270,8 @@ void CalenderRun::refuse_unreachable_target() const {
                 "calendering.target_porosity = {:.3g}: its gap of {:.4g} um is below the "
                 "spheres' own height of {:.4g} um (NCM particles and CB agglomerates with "
                 "their inner pores, formulation.cb_porosity, compacted at most to "
-                "calendering.cb_minimal_porosity where calendering.cb_compaction_pressure > 0), "
+                "calendering.cb_minimal_porosity where calendering.cb_compaction_pressure > 0 or "
+                "calendering.cb_extrusion), "
                 "so no packing of them reaches it; the lowest porosity with the spheres filling "
                 "the whole gap is {:.3g}",
                 c_.calender_target_porosity, gap * 1e6, spheres * 1e6, porosity_at(spheres)));
@@ -398,6 +413,8 @@ void CalenderRun::step() {
     }
     if (compaction_.compacts() && phase_ != Phase::settle && steps() % kCompactionEvery == 0)
         compact_agglomerates();
+    if (extrusion_.on && phase_ != Phase::settle && steps() % kCompactionEvery == 0)
+        extrude_agglomerates();
     const bool plate = phase_ == Phase::load || phase_ == Phase::hold || phase_ == Phase::unload;
     if (plate) {
         sim_->set_plate_height(sim_->plate_height() + plate_velocity() * sim_->settings().dt);
@@ -441,7 +458,8 @@ void CalenderRun::record() {
               s.zz * 1e-6,
               s.xy * 1e-6,
               s.xz * 1e-6,
-              s.yz * 1e-6});
+              s.yz * 1e-6,
+              double(extruded_)});
     if (phase_ == Phase::load) {
         load_pressure_.push_back(pressure_);
         load_porosity_.push_back(porosity_at(h));
@@ -482,6 +500,61 @@ void CalenderRun::compact_agglomerates() {
     }
 }
 
+/// M-2.13: a CB sphere whose NCM, substrate and plate contacts (their whole lenses) have pressed
+/// it past its densest state flows out of the gap: its solid joins the nearest agglomerates with
+/// pore room, and it leaves the packing with its bonds.
+void CalenderRun::extrude_agglomerates() {
+    const ParticleStore& p = sim_->particles();
+    std::vector<double> lens(p.size(), 0.0);
+    for (const Simulation::ContactOverlap& o : sim_->contact_overlaps()) {
+        if (o.j == Simulation::ContactOverlap::kWall) {
+            if (is_cb(o.i)) lens[o.i] += dense_lens(p.radius[o.i], 0.0, o.overlap);
+        } else if (is_cb(o.i) != is_cb(o.j)) {
+            const std::size_t a = is_cb(o.i) ? o.i : o.j, d = is_cb(o.i) ? o.j : o.i;
+            lens[a] += dense_lens(p.radius[a], p.radius[d], o.overlap);
+        }
+    }
+    std::vector<std::size_t> out;
+    std::vector<char> leaving(p.size(), 0);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (is_cb(i) && extruded(extrusion_, p.radius[i], lens[i])) {
+            out.push_back(i);
+            leaving[i] = 1;
+        }
+    if (out.empty()) return;
+    for (const std::size_t g : out) pass_on_solid(g, leaving);
+    for (const Bond& b : sim_->bonds().bonds)
+        if (b.state.intact() && (leaving[b.i] || leaving[b.j])) ++extruded_bonds_;
+    sim_->remove_particles(out);
+    extruded_ += out.size();
+}
+
+void CalenderRun::pass_on_solid(std::size_t g, const std::vector<char>& leaving) {
+    ParticleStore& p = sim_->particles_mut();
+    const double v = sphere_volume(p.radius[g]);
+    const double solid = (1.0 - inner_porosity(g)) * v, mass = p.density[g] * v;
+    std::vector<std::pair<double, std::size_t>> near; // (squared distance, index), nearest first
+    for (std::size_t k = 0; k < p.size(); ++k)
+        if (is_cb(k) && !leaving[k] && pore_room(extrusion_, p.radius[k], inner_porosity(k)) > 0.0)
+            near.emplace_back(norm2(film_.box.minimum_image(p.position[g], p.position[k])), k);
+    std::sort(near.begin(), near.end());
+    std::vector<double> room;
+    for (const auto& [d2, k] : near)
+        room.push_back(pore_room(extrusion_, p.radius[k], inner_porosity(k)));
+    const ExtrusionShares share = share_extruded_solid(solid, room);
+    if (share.left > 1e-9 * solid)
+        throw RunError(fmt::format(
+            "agglomerate {} was pressed past its densest state (calendering.cb_extrusion), but "
+            "the other agglomerates have no pore room left for its solid: the film is at its "
+            "densest ({:.3g} um of solid volume without a place)",
+            p.id[g], std::cbrt(share.left) * 1e6));
+    for (std::size_t n = 0; n < near.size() && share.taken[n] > 0.0; ++n) {
+        const std::size_t k = near[n].second;
+        p.set_density(k, p.density[k] + mass * share.taken[n] / solid / sphere_volume(p.radius[k]));
+    }
+    extruded_mass_ += mass;
+}
+
 /// While relaxing: every kTopWindow, whether the film's top stood still since the last look.
 void CalenderRun::watch_top() {
     const double t = now() - phase_start_;
@@ -501,6 +574,9 @@ CalenderResult CalenderRun::calender() {
     r_.dried_thickness = film_top();
     r_.dried_porosity = porosity_at(r_.dried_thickness);
     dried_overlap_ = sim_->stats().max_overlap_rel;
+    const ParticleStore& p = sim_->particles();
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (is_cb(i)) cb_mass_ += p.density[i] * sphere_volume(p.radius[i]);
     try {
         guard_.start(*sim_);
         fire_ = FireRelaxation(1.8 * sim_->settings().dt); // within the guard's stable range
@@ -522,7 +598,9 @@ CalenderResult CalenderRun::calender() {
                         "calendering.target_porosity or lower calendering.target_pressure. A CB "
                         "sphere's contact that flattens at a constant limiting pressure lets the "
                         "sphere be pressed through: let it harden as the agglomerate compacts "
-                        "(calendering.cb_dense_yield_pressure, docs/model.md M-2.12)";
+                        "(calendering.cb_dense_yield_pressure, docs/model.md M-2.12), and let "
+                        "one pressed past its densest state flow out of the gap "
+                        "(calendering.cb_extrusion, M-2.13)";
         log_->error("calendering stopped: {}", r_.error);
     }
     finish();
@@ -615,6 +693,10 @@ json CalenderRun::summary() const {
         {"inner_porosity_end", cb_inner_porosity()},
         {"densest_sphere_height_um", densest_sphere_height() * 1e6},
         {"porosity_at_densest_sphere_height", porosity_at(densest_sphere_height())}};
+    s["cb_extrusion"] = {{"on", extrusion_.on},
+                         {"agglomerates", extruded_},
+                         {"mass_share_of_cb", cb_mass_ > 0.0 ? extruded_mass_ / cb_mass_ : 0.0},
+                         {"intact_bonds_removed", extruded_bonds_}};
     s["peak"] = {{"pressure_MPa", r_.peak_pressure * 1e-6},
                  {"thickness_um", r_.peak_thickness * 1e6},
                  {"porosity", r_.peak_porosity},

@@ -6,7 +6,7 @@ namespace drydem {
 namespace {
 template <class T>
 void apply(std::vector<T>& v, const std::vector<std::uint32_t>& order, std::vector<T>& scratch) {
-    scratch.resize(v.size());
+    scratch.resize(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) scratch[k] = v[order[k]];
     v.swap(scratch);
 }

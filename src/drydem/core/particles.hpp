@@ -65,7 +65,18 @@ struct ParticleStore {
         inv_inertia[i] = 1.0 / (0.4 * mass[i] * r * r);
     }
 
-    /// Reorders every per-particle array so that new index k holds old index order[k].
+    /// Sphere i takes the density ρ with its radius kept (an agglomerate taking solid into its
+    /// pores): mass and moment of inertia follow, with any density scaling of its mass kept.
+    void set_density(std::size_t i, double rho) {
+        const double ratio = rho / density[i];
+        density[i] = rho;
+        mass[i] *= ratio;
+        inv_mass[i] /= ratio;
+        inv_inertia[i] /= ratio;
+    }
+
+    /// Reorders every per-particle array so that new index k holds old index order[k]; an order
+    /// shorter than the store keeps only the particles it lists.
     void permute(const std::vector<std::uint32_t>& order);
 };
 

@@ -9,9 +9,10 @@ analysis::Formulation analysis_formulation(const Config& c) {
     f.ncm_density = c.ncm_density;
     f.cb_density = c.cb_density;
     f.cb_porosity = c.cb_porosity;
-    // Only compacting agglomerates (calendering) make a CB sphere's density a signal; otherwise a
-    // file's CB density (a peer's rounded value, say) must not change the carbon.
-    f.cb_agglomerate_density = c.cb_compaction_pressure > 0.0 ? cb_agglomerate_density(c) : 0.0;
+    // Only compacting or extruding agglomerates (calendering) make a CB sphere's density a signal;
+    // otherwise a file's CB density (a peer's rounded value, say) must not change the carbon.
+    f.cb_agglomerate_density =
+        c.cb_compaction_pressure > 0.0 || c.cb_extrusion ? cb_agglomerate_density(c) : 0.0;
     f.pvdf_density = c.pvdf_density;
     f.ncm_mass_fraction = c.ncm_mass_fraction;
     f.cb_mass_fraction = c.cb_mass_fraction;

@@ -224,23 +224,34 @@ ForceField make_calendering_force_field(const Config& config, const FilmRecipe& 
     return ff;
 }
 
-AgglomerateCompactionParams agglomerate_compaction(const Config& c) {
+namespace {
+/// calendering.cb_minimal_porosity (0 = binder-filled); when `used`, InputError for one not
+/// below formulation.cb_porosity or below the binder-filled porosity.
+double minimal_agglomerate_porosity(const Config& c, bool used) {
     const double filled = agglomerate_binder_porosity(c);
-    const AgglomerateCompactionParams p{
-        c.cb_porosity, c.cb_minimal_porosity > 0.0 ? c.cb_minimal_porosity : filled,
-        c.cb_compaction_pressure};
-    if (p.compacts() && p.minimal_porosity >= p.initial_porosity)
+    const double e = c.cb_minimal_porosity > 0.0 ? c.cb_minimal_porosity : filled;
+    if (used && e >= c.cb_porosity)
         throw InputError(fmt::format(
             "calendering.cb_minimal_porosity = {:.3g} must be below formulation.cb_porosity = "
             "{:.3g}: the agglomerates compact from their dried inner porosity down to it",
-            p.minimal_porosity, p.initial_porosity));
-    if (p.compacts() && p.minimal_porosity < filled)
+            e, c.cb_porosity));
+    if (used && e < filled)
         throw InputError(fmt::format(
             "calendering.cb_minimal_porosity = {:.3g} is below {:.3g}, the share of the "
             "agglomerates' pores that their binder fills (formulation.pvdf_mass_fraction over "
             "formulation.cb_mass_fraction, by volume): no pressure closes those; 0 chooses it",
-            p.minimal_porosity, filled));
-    return p;
+            e, filled));
+    return e;
+}
+} // namespace
+
+AgglomerateCompactionParams agglomerate_compaction(const Config& c) {
+    return {c.cb_porosity, minimal_agglomerate_porosity(c, c.cb_compaction_pressure > 0.0),
+            c.cb_compaction_pressure};
+}
+
+AgglomerateExtrusionParams agglomerate_extrusion(const Config& c) {
+    return {c.cb_porosity, minimal_agglomerate_porosity(c, c.cb_extrusion), c.cb_extrusion};
 }
 
 double agglomerate_binder_porosity(const Config& c) {

@@ -8,6 +8,7 @@
 #include "drydem/drying/scaling.hpp"
 #include "drydem/engine/bond_network.hpp"
 #include "drydem/forces/agglomerate_compaction.hpp"
+#include "drydem/forces/agglomerate_extrusion.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/io/config.hpp"
 #include "drydem/setup/formulation.hpp"
@@ -41,6 +42,9 @@ BondNetwork calendering_bond_parameters(const Config& c, const FilmRecipe& recip
 /// calendering.cb_minimal_porosity, 0 = binder-filled, b / (1 + b); ε_0 = formulation.cb_porosity;
 /// model.md M-2.11). InputError for an ε_min not below ε_0 or below the binder-filled porosity.
 AgglomerateCompactionParams agglomerate_compaction(const Config& c);
+/// The extrusion of agglomerates pressed past their densest state (calendering.cb_extrusion,
+/// ε_min and ε_0 as for the compaction, model.md M-2.13); the same InputError for ε_min.
+AgglomerateExtrusionParams agglomerate_extrusion(const Config& c);
 /// The inner porosity of an agglomerate whose pores hold only the recipe's binder (M-2.11).
 double agglomerate_binder_porosity(const Config& c);
 

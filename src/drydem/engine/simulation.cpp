@@ -154,6 +154,54 @@ std::vector<double> Simulation::particle_mean_stress() const {
     return t;
 }
 
+std::vector<Simulation::ContactOverlap> Simulation::contact_overlaps() const {
+    std::vector<ContactOverlap> out;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        const double r = p_.radius[i], z = p_.position[i].z;
+        if (nl_.owners() == p_.size())
+            for (std::uint32_t k = nl_.begin(i); k < nl_.end(i); ++k) {
+                const std::uint32_t j = nl_.partner(k);
+                const double d = norm(box_.minimum_image(p_.position[i], p_.position[j]));
+                if (const double overlap = r + p_.radius[j] - d; overlap > 0.0)
+                    out.push_back({std::uint32_t(i), j, overlap});
+            }
+        if (substrate_on_ && z < r) out.push_back({std::uint32_t(i), ContactOverlap::kWall, r - z});
+        if (std::isfinite(plate_height_) && z + r > plate_height_)
+            out.push_back({std::uint32_t(i), ContactOverlap::kWall, z + r - plate_height_});
+    }
+    return out;
+}
+
+void Simulation::remove_particles(const std::vector<std::size_t>& which) {
+    if (which.empty()) return;
+    if (settings_.integrator != Integrator::explicit_verlet)
+        throw RunError("particles can leave the packing only with the explicit integrator");
+    const std::size_t n = p_.size();
+    std::vector<std::uint32_t> new_index(n, 0);
+    for (const std::size_t i : which) new_index.at(i) = UINT32_MAX;
+    std::vector<std::uint32_t> order;
+    for (std::size_t i = 0; i < n; ++i)
+        if (new_index[i] != UINT32_MAX) {
+            new_index[i] = std::uint32_t(order.size());
+            order.push_back(std::uint32_t(i));
+        }
+    nl_.keep_rows(new_index);
+    std::vector<Bond> kept;
+    for (Bond b : bonds_.bonds)
+        if (new_index[b.i] != UINT32_MAX && new_index[b.j] != UINT32_MAX) {
+            b.i = new_index[b.i], b.j = new_index[b.j];
+            kept.push_back(b);
+        }
+    bonds_.bonds.swap(kept);
+    bond_force_.assign(bonds_.bonds.size(), {});
+    p_.permute(order);
+    std::vector<BodyState> body(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) body[k] = body_state_[order[k]];
+    body_state_.swap(body);
+    allocate_integrator();
+    force_rebuild_ = true;
+}
+
 EngineState Simulation::state() const {
     return {p_,           body_state_, nl_.state(), step_,  time_,          liquid_level_,
             settings_.dt, stats_,      accel_,      alpha_, force_rebuild_, rebuilds_since_sort_};

@@ -160,6 +160,19 @@ public:
     /// x_c on the pair's contact plane (the spheres' intersection circle) or on the wall. The
     /// same forces as contact_stress: Σ_i 3 σ_i V_i = tr(s) V.
     [[nodiscard]] std::vector<double> particle_mean_stress() const;
+    /// An overlap of the present state: particles i and j (storage order), or i with a wall
+    /// (j = kWall: the substrate or the plate, sphere on a plane) [m].
+    struct ContactOverlap {
+        static constexpr std::uint32_t kWall = UINT32_MAX;
+        std::uint32_t i = 0, j = kWall;
+        double overlap = 0.0;
+    };
+    /// Every listed pair that overlaps, and every sphere pressed into the substrate or the plate.
+    [[nodiscard]] std::vector<ContactOverlap> contact_overlaps() const;
+    /// Takes the particles `which` (storage order) out of the packing: the calendering's
+    /// extruded agglomerates (model.md M-2.13). Their pair states and bonds go with them; the
+    /// others keep theirs and their order. Explicit integrator only (RunError otherwise).
+    void remove_particles(const std::vector<std::size_t>& which);
     /// Translational + rotational kinetic energy [J].
     [[nodiscard]] double kinetic_energy() const;
     /// Total linear momentum [kg m/s].

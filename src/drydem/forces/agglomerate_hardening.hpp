@@ -80,6 +80,13 @@ inline LensCaps lens_caps(const ContactSpheres& s, double overlap) {
             sphere_cap_rate(s.r_j, h_j) * std::max(1.0 - dx_dd, 0.0)};
 }
 
+/// The share of an agglomerate's envelope that a lens takes when it has compacted the rest from
+/// ε_0 to ε_min with the solid kept: V_l / V = 1 − (1 − ε_0) / (1 − ε_min) (0.6 for 0.75 → 0.383).
+[[nodiscard]] inline double densest_lens_fraction(double initial_porosity,
+                                                  double minimal_porosity) {
+    return 1.0 - (1.0 - initial_porosity) / (1.0 - minimal_porosity);
+}
+
 /// An agglomerate's porosity after a lens of volume V_l is pressed into it, and dε/dδ for a lens
 /// growing at dV_l/dδ; at and beyond ε_min: ε_min and 0.
 struct LensPorosity {
@@ -90,8 +97,8 @@ inline LensPorosity lens_porosity(const AgglomerateHardening& h, double radius, 
                                   double lens_rate) {
     const double v = sphere_volume(radius);
     const double solid = 1.0 - h.initial_porosity;
-    // ε = ε_min at V_l = V (1 − (1 − ε_0) / (1 − ε_min)).
-    if (lens >= v * (1.0 - solid / (1.0 - h.minimal_porosity))) return {h.minimal_porosity, 0.0};
+    if (lens >= v * densest_lens_fraction(h.initial_porosity, h.minimal_porosity))
+        return {h.minimal_porosity, 0.0};
     const double left = v - lens;
     return {1.0 - solid * v / left, -solid * v / (left * left) * lens_rate};
 }

@@ -71,6 +71,31 @@ void NeighborList::carry_states(const ParticleStore& p) {
     }
 }
 
+void NeighborList::keep_rows(const std::vector<std::uint32_t>& new_index) {
+    if (offset_.empty()) return;
+    std::vector<std::uint32_t> offset{0}, partner;
+    std::vector<double> reach2;
+    std::vector<PairState> state;
+    std::vector<Vec3> x_build;
+    for (std::size_t i = 0; i + 1 < offset_.size(); ++i) {
+        if (new_index[i] == UINT32_MAX) continue;
+        for (std::uint32_t s = offset_[i]; s < offset_[i + 1]; ++s) {
+            const std::uint32_t j = new_index[partner_[s]];
+            if (j == UINT32_MAX) continue;
+            partner.push_back(j);
+            reach2.push_back(reach2_[s]);
+            state.push_back(state_[s]);
+        }
+        offset.push_back(std::uint32_t(partner.size()));
+        x_build.push_back(x_build_[i]);
+    }
+    offset_.swap(offset);
+    partner_.swap(partner);
+    reach2_.swap(reach2);
+    state_.swap(state);
+    x_build_.swap(x_build);
+}
+
 std::vector<NeighborList::Entry> NeighborList::state_entries(const ParticleStore& p) const {
     std::vector<Entry> out;
     for (std::size_t i = 0; i + 1 < offset_.size(); ++i)

@@ -61,6 +61,10 @@ public:
     void build(ParticleStore& p, const Box& box, RangeFn&& range, OwnerRangeFn&& owner_range,
                bool sort);
 
+    /// After particles left the store: `new_index[i]` is old particle i's new index, UINT32_MAX
+    /// for one that left. Its rows and every pair with it go; the rest keep their states.
+    void keep_rows(const std::vector<std::uint32_t>& new_index);
+
     /// Kept pair states keyed by (owner id, partner id), for tests.
     struct Entry {
         std::uint32_t owner_id, partner_id;
