@@ -20,6 +20,8 @@
 #                   contacts'); e.g. sg_p159.4_c60_y60_n1.5_v0.4_s16
 #   ..._d<D>        (before _v/_s) calendering.cb_dense_yield_pressure D MPa (the CB contacts
 #                   harden to it as their lens compacts the agglomerate, docs/model.md M-2.12)
+#   ..._x           (before _v/_s) calendering.cb_extrusion: agglomerates pressed past their
+#                   densest state flow out of the gap (docs/model.md M-2.13)
 # Defaults of the calendering runs: plate speed V (0.2 m/s), density scaling S (16), the
 # calendering defaults otherwise (docs/configuration.md). Extra --set for every calendering run:
 # CALENDER_SET (space-separated KEY=VALUE).
@@ -64,6 +66,7 @@ press() {  # $1 dried folder, $2 step name (carries _v<V> and _s<S>), rest: --se
   [[ $step =~ _y([0-9.]+) ]] && extra+=(--set calendering.cb_yield_pressure="${BASH_REMATCH[1]} MPa")
   [[ $step =~ _n([0-9.]+) ]] && extra+=(--set calendering.yield_pressure="${BASH_REMATCH[1]} GPa")
   [[ $step =~ _d([0-9.]+) ]] && extra+=(--set calendering.cb_dense_yield_pressure="${BASH_REMATCH[1]} MPa")
+  [[ $step =~ _x(_|$) ]] && extra+=(--set calendering.cb_extrusion=true)
   for kv in ${CALENDER_SET:-}; do extra+=(--set "$kv"); done
   rm -rf "$dir"
   "$drydem" calender "$dried" -o "$dir" --threads "$threads" --quiet --no-plots \
