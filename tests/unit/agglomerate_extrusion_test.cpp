@@ -10,25 +10,19 @@
 #include <string>
 #include <gtest/gtest.h>
 #include "expect_rel.hpp"
+#include "sphere_lens.hpp"
 #include <cmath>
 #include <numbers>
 
 namespace {
 using namespace drydem;
 using testing_support::expect_rel;
+using testing_support::lens_volume;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kRcb = 0.75e-6, kRncm = 5e-6;
 
 AgglomerateExtrusionParams extrusion() { return {0.75, 0.383, true}; }
-
-/// Volume of the lens of two spheres at centre distance D (Weisstein, "Sphere-Sphere
-/// Intersection"), written out apart from the header's caps.
-double lens_volume(double ri, double rj, double d) {
-    const double s = ri + rj - d;
-    return kPi * s * s *
-           (d * d + 2 * d * rj - 3 * rj * rj + 2 * d * ri + 6 * ri * rj - 3 * ri * ri) / (12 * d);
-}
 
 TEST(AgglomerateExtrusion, ADensePartnerTakesTheWholeLens) {
     for (double f : {0.05, 0.5, 1.2}) {

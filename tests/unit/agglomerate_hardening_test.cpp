@@ -11,26 +11,20 @@
 #include "drydem/setup/formulation.hpp"
 #include <gtest/gtest.h>
 #include "expect_rel.hpp"
+#include "sphere_lens.hpp"
 #include <cmath>
 #include <numbers>
 
 namespace {
 using namespace drydem;
 using testing_support::expect_rel;
+using testing_support::lens_volume;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kRcb = 0.75e-6, kRncm = 5e-6;
 constexpr double kPy0 = 110e6, kPd = 600e6;
 
 AgglomerateHardening hardening(AgglomerateSides sides) { return {0.75, 0.38, kPd, sides}; }
-
-/// Volume of the lens of two spheres at centre distance D (Weisstein, "Sphere-Sphere
-/// Intersection"), written out apart from the header's caps.
-double lens_volume(double ri, double rj, double d) {
-    const double s = ri + rj - d;
-    return kPi * s * s *
-           (d * d + 2 * d * rj - 3 * rj * rj + 2 * d * ri + 6 * ri * rj - 3 * ri * ri) / (12 * d);
-}
 
 TEST(AgglomerateHardening, LensCapsAddUpToTheLensAndGrowAtTheirRate) {
     for (double f : {0.01, 0.3, 0.9}) {
