@@ -533,14 +533,21 @@ void CalenderRun::pass_on_solid(std::size_t g, const std::vector<char>& leaving)
     ParticleStore& p = sim_->particles_mut();
     const double v = sphere_volume(p.radius[g]);
     const double solid = (1.0 - inner_porosity(g)) * v, mass = p.density[g] * v;
-    std::vector<std::pair<double, std::size_t>> near; // (squared distance, index), nearest first
+    struct Candidate {
+        double distance2, room;
+        std::size_t index;
+    };
+    std::vector<Candidate> near; // nearest first, ties by storage index
     for (std::size_t k = 0; k < p.size(); ++k)
-        if (is_cb(k) && !leaving[k] && pore_room(extrusion_, p.radius[k], inner_porosity(k)) > 0.0)
-            near.emplace_back(norm2(film_.box.minimum_image(p.position[g], p.position[k])), k);
-    std::sort(near.begin(), near.end());
+        if (is_cb(k) && !leaving[k])
+            if (const double room = pore_room(extrusion_, p.radius[k], inner_porosity(k)); room > 0)
+                near.push_back(
+                    {norm2(film_.box.minimum_image(p.position[g], p.position[k])), room, k});
+    std::sort(near.begin(), near.end(), [](const Candidate& a, const Candidate& b) {
+        return a.distance2 != b.distance2 ? a.distance2 < b.distance2 : a.index < b.index;
+    });
     std::vector<double> room;
-    for (const auto& [d2, k] : near)
-        room.push_back(pore_room(extrusion_, p.radius[k], inner_porosity(k)));
+    for (const Candidate& c : near) room.push_back(c.room);
     const ExtrusionShares share = share_extruded_solid(solid, room);
     if (share.left > 1e-9 * solid)
         throw RunError(fmt::format(
@@ -549,7 +556,7 @@ void CalenderRun::pass_on_solid(std::size_t g, const std::vector<char>& leaving)
             "densest ({:.3g} um of solid volume without a place)",
             p.id[g], std::cbrt(share.left) * 1e6));
     for (std::size_t n = 0; n < near.size() && share.taken[n] > 0.0; ++n) {
-        const std::size_t k = near[n].second;
+        const std::size_t k = near[n].index;
         p.set_density(k, p.density[k] + mass * share.taken[n] / solid / sphere_volume(p.radius[k]));
     }
     extruded_mass_ += mass;
