@@ -65,11 +65,11 @@ def fmt(v, spec):
 
 
 def loading_curve(run):
-    """(pressure [MPa], porosity) of the loading rows of compaction.csv."""
+    """(pressure [MPa], porosity) of the first pass's loading rows of compaction.csv."""
     import csv
     with open(os.path.join(run, 'compaction.csv')) as f:
         return [(float(r['pressure_MPa']), float(r['porosity'])) for r in csv.DictReader(f)
-                if r['phase'] == '1']
+                if r['phase'] == '1' and r.get('pass', '1') in ('1', '1.0')]
 
 
 def porosity_at(curve, p):

@@ -121,7 +121,11 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
         : c.calender_mode == "line_load"
             ? fmt::format("line load {:.4g} N/mm, roll radius {:.4g} mm",
                           c.calender_line_load * 1e-3, c.calender_roll_radius * 1e3)
-            : fmt::format("porosity {:.3g}", c.calender_target_porosity);
+        : c.calender_mode == "unloaded_porosity"
+            ? fmt::format("porosity {:.3g} +- {:.3g} after unloading, in at most {} passes",
+                          c.calender_target_porosity, c.calender_porosity_tolerance,
+                          c.calender_passes)
+            : fmt::format("porosity {:.3g} at peak", c.calender_target_porosity);
     fmt::print("  mode {}, plate speed {:.3g} m/s, target {}\n", c.calender_mode,
                c.calender_plate_speed, target);
     // The spheres (NCM and CB envelopes) fill the whole gap at this height (docs/calendering.md);

@@ -15,6 +15,8 @@
 //      measured (springback). The roll
 //      leaves a real film over milliseconds, so its springback is that of a film at rest: the
 //      last plate frames of a dynamic run still see it rising.
+//      In unloaded_porosity mode steps 3-6 repeat as passes, each pressed deeper (passes.hpp),
+//      until the relaxed film has the target porosity.
 //   7. end: final.csv, summary.json with the fitted compaction curve, the structure analysis.
 // From the load on, every kCompactionEvery steps the CB agglomerates compact under their mean
 // stress (calendering.cb_compaction_pressure, model.md M-2.11), and those that dense partners
@@ -25,6 +27,7 @@
 #include "drydem/calendering/bonding.hpp"
 #include "drydem/calendering/compaction_fit.hpp"
 #include "drydem/calendering/nip.hpp"
+#include "drydem/calendering/passes.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/drying/analysis_inputs.hpp"
@@ -103,8 +106,15 @@ private:
     [[nodiscard]] double mass_scaling(const SizeClass& s) const {
         return s.is_cb ? c_.cb_density_scaling : 1.0;
     }
+    /// Displacement-controlled modes: the plate stops at a porosity (peak_target_).
+    [[nodiscard]] bool presses_to_porosity() const {
+        return c_.calender_mode == "displacement" || c_.calender_mode == "unloaded_porosity";
+    }
     [[nodiscard]] bool phase_over() const;
     void next_phase();
+    /// After a relaxation: the pass measured; true when another pass is to follow.
+    [[nodiscard]] bool another_pass();
+    void start_pass();
     void record();
     void watch_top();
     /// The relaxation's end: the settling's force tolerance reached, or the top standing still.
@@ -205,6 +215,9 @@ private:
     double settled_thickness_ = 0.0, settled_overlap_ = 0.0, dried_overlap_ = 0.0;
     double peak_plate_ = 0.0; ///< the plate's height at the end of the hold [m]
     double peak_sphere_fraction_ = 0.0, peak_cb_porosity_ = 0.0; ///< at the end of the hold
+    double peak_target_ = c_.calender_target_porosity; ///< this pass presses to it (porosity modes)
+    double pass_peak_pressure_ = 0.0;                  ///< [Pa]
+    std::vector<CalenderPass> passes_;
     BinderDistribution binder_;
     BondingReport bonding_;
     std::size_t broken_at_peak_ = 0; ///< bonds broken by the end of the hold
@@ -230,7 +243,7 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
                                              "stress_xx_MPa",    "stress_yy_MPa",
                                              "stress_zz_MPa",    "stress_xy_MPa",
                                              "stress_xz_MPa",    "stress_yz_MPa",
-                                             "cb_extruded"}) {
+                                             "cb_extruded",      "pass"}) {
     for (const SizeClass& s : film_.recipe.species)
         inertia_scale_ =
             std::max(inertia_scale_, s.diameter * std::sqrt(s.density * mass_scaling(s)));
@@ -259,7 +272,7 @@ ParticleStore CalenderRun::dried_film() {
 /// Before the first step (pressure mode): a target pressure that no packing of these contacts
 /// carries, or a plate so fast that the film cannot follow it quasi-statically.
 void CalenderRun::refuse_unreachable_target() const {
-    if (c_.calender_mode == "displacement") {
+    if (presses_to_porosity()) {
         // The gap at the target porosity must hold the spheres' volume: below it only overlap
         // lenses of the size of whole spheres would make room (docs/calendering.md).
         const double gap =
@@ -352,7 +365,7 @@ double CalenderRun::plate_velocity() const {
     case Phase::load:
         return -speed_;
     case Phase::hold:
-        if (c_.calender_mode == "displacement") return 0.0;
+        if (presses_to_porosity()) return 0.0;
         // Proportional servo: full speed at a 20 % pressure error, down when below the target.
         return -speed_ *
                std::clamp(5.0 * (target_pressure() - pressure_) / target_pressure(), -1.0, 1.0);
@@ -369,9 +382,8 @@ bool CalenderRun::phase_over() const {
     case Phase::settle:
         return fire_.rms_force() <= settle_force_ || t >= c_.calender_settle_time;
     case Phase::load:
-        return c_.calender_mode != "displacement"
-                   ? pressure_ >= target_pressure()
-                   : porosity_at(sim_->plate_height()) <= c_.calender_target_porosity;
+        return presses_to_porosity() ? porosity_at(sim_->plate_height()) <= peak_target_
+                                     : pressure_ >= target_pressure();
     case Phase::hold:
         return t >= c_.calender_hold_time;
     case Phase::unload:
@@ -394,10 +406,73 @@ void CalenderRun::next_phase() {
     if (phase_ == Phase::unload) sim_->set_plate_height(INFINITY); // the plate is gone
     if (phase_ == Phase::settle) start_pressing();
     write_frame();
+    if (phase_ == Phase::relax && another_pass()) {
+        start_pass();
+        return;
+    }
     phase_ = Phase(int(phase_) + 1);
     phase_start_ = now();
     log_->info("{} from t = {:.4g} us: plate at {:.4g} um, {:.4g} MPa", phase_name(phase_),
                now() * 1e6, std::min(sim_->plate_height(), 1.0) * 1e6, pressure_ * 1e-6);
+}
+
+/// The relaxed film measured as a pass; in unloaded_porosity mode, whether it needs another one
+/// (and which peak: passes.hpp), or a RunError when the target is passed or out of reach.
+bool CalenderRun::another_pass() {
+    const double top = film_top();
+    passes_.push_back({peak_target_, porosity_at(peak_plate_), pass_peak_pressure_,
+                       porosity_at(top), top, at_rest()});
+    const CalenderPass& last = passes_.back();
+    log_->info("pass {}: pressed to porosity {:.4f} ({:.4g} MPa), unloaded {:.4f}", passes_.size(),
+               last.peak_porosity, last.peak_pressure * 1e-6, last.unloaded_porosity);
+    if (c_.calender_mode != "unloaded_porosity") return false;
+    const double target = c_.calender_target_porosity, tol = c_.calender_porosity_tolerance;
+    const PassDecision d = decide_next_pass(passes_, target, tol, c_.calender_passes,
+                                            porosity_at(densest_sphere_height()));
+    switch (d.outcome) {
+    case PassOutcome::done:
+        return false;
+    case PassOutcome::again:
+        peak_target_ = d.next_peak;
+        return true;
+    case PassOutcome::pressed_past:
+        throw RunError(fmt::format(
+            "pass {} pressed the film past calendering.target_porosity = {:.4g}: it sprang back "
+            "only to {:.4f} from {:.4f} (calendering.porosity_tolerance = {:.3g}); a film cannot "
+            "be un-pressed: widen the tolerance or aim higher",
+            passes_.size(), target, last.unloaded_porosity, last.peak_porosity, tol));
+    case PassOutcome::out_of_passes:
+        throw RunError(fmt::format(
+            "calendering.target_porosity = {:.4g} after unloading not reached in "
+            "calendering.passes = {}: the last pass left the film at {:.4f}; allow more passes",
+            target, c_.calender_passes, last.unloaded_porosity));
+    case PassOutcome::out_of_reach:
+        break;
+    }
+    throw RunError(fmt::format(
+        "calendering.target_porosity = {:.4g} after unloading is out of reach: with the "
+        "springback of pass {} ({:.4f} -> {:.4f}) the next pass would press to {:.4f}, at or "
+        "below {:.4f}, where the spheres fill the whole gap (docs/calendering.md)",
+        target, passes_.size(), last.peak_porosity, last.unloaded_porosity, d.next_peak,
+        porosity_at(densest_sphere_height())));
+}
+
+/// The next pass: the relaxed film at rest, the guard's step again, the plate back on its
+/// highest particle.
+void CalenderRun::start_pass() {
+    ParticleStore& p = sim_->particles_mut();
+    for (std::size_t i = 0; i < p.size(); ++i) p.velocity[i] = p.omega[i] = Vec3{};
+    guard_.start(*sim_);
+    sim_->set_plate_height(highest_top());
+    relax_fire_ = FireRelaxation(1.8 * largest_calender_step(c_));
+    relax_top_ = NAN;
+    next_top_check_ = 0.0;
+    top_static_ = false;
+    pass_peak_pressure_ = 0.0;
+    phase_ = Phase::load;
+    phase_start_ = now();
+    log_->info("pass {}: load from t = {:.4g} us to porosity {:.4f}", passes_.size() + 1,
+               now() * 1e6, peak_target_);
 }
 
 /// One engine step, the guard, the plate's move, the phase, a row when due.
@@ -420,6 +495,7 @@ void CalenderRun::step() {
         sim_->set_plate_height(sim_->plate_height() + plate_velocity() * sim_->settings().dt);
         pressure_ = plate_pressure();
         r_.peak_pressure = std::max(r_.peak_pressure, pressure_);
+        pass_peak_pressure_ = std::max(pass_peak_pressure_, pressure_);
     } else {
         pressure_ = 0.0;
     }
@@ -459,8 +535,9 @@ void CalenderRun::record() {
               s.xy * 1e-6,
               s.xz * 1e-6,
               s.yz * 1e-6,
-              double(extruded_)});
-    if (phase_ == Phase::load) {
+              double(extruded_),
+              double(passes_.size() + 1)});
+    if (phase_ == Phase::load && passes_.empty()) { // the virgin loading curve
         load_pressure_.push_back(pressure_);
         load_porosity_.push_back(porosity_at(h));
         load_inertial_.push_back(inertial);
@@ -617,6 +694,7 @@ CalenderResult CalenderRun::calender() {
 void CalenderRun::finish() {
     status_.clear();
     r_.steps = steps();
+    r_.passes = int(passes_.size());
     r_.wall_time = std::chrono::duration<double>(Clock::now() - start_).count();
     if (r_.completed) {
         r_.unloaded_thickness = film_top();
@@ -700,6 +778,19 @@ json CalenderRun::summary() const {
         {"inner_porosity_end", cb_inner_porosity()},
         {"densest_sphere_height_um", densest_sphere_height() * 1e6},
         {"porosity_at_densest_sphere_height", porosity_at(densest_sphere_height())}};
+    json passes = json::array();
+    for (const CalenderPass& q : passes_)
+        passes.push_back({{"peak_target_porosity", q.peak_target},
+                          {"peak_porosity", q.peak_porosity},
+                          {"peak_pressure_MPa", q.peak_pressure * 1e-6},
+                          {"unloaded_porosity", q.unloaded_porosity},
+                          {"unloaded_thickness_um", q.unloaded_thickness * 1e6},
+                          {"at_rest", q.at_rest}});
+    s["passes"] = passes;
+    if (c_.calender_mode == "unloaded_porosity")
+        s["target"] = {{"unloaded_porosity", c_.calender_target_porosity},
+                       {"tolerance", c_.calender_porosity_tolerance},
+                       {"max_passes", c_.calender_passes}};
     s["cb_extrusion"] = {{"on", extrusion_.on},
                          {"agglomerates", extruded_},
                          {"mass_share_of_cb", cb_mass_ > 0.0 ? extruded_mass_ / cb_mass_ : 0.0},

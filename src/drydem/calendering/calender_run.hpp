@@ -35,6 +35,7 @@ struct CalenderResult {
     double springback = 0.0;          ///< (unloaded - peak) / peak thickness
     bool unloaded_at_rest = false;    ///< force tolerance reached or top standing still
     double max_inertial_number = 0.0; ///< while loading above 1 % of the peak pressure
+    int passes = 0; ///< press-unload-relax cycles (more than one in unloaded_porosity mode)
     std::int64_t steps = 0;
     double wall_time = 0.0; ///< [s], the end-of-run analysis excluded
 };
