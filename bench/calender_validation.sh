@@ -12,6 +12,9 @@
 #   m20_dry         the README main job's film (20.1 mg/cm2, 75 um box, embedded default)
 #   m20_e<E>        that film pressed to the porosity 0.<E> at peak (displacement mode)
 #                   and unloaded; m20_e<E>_v<V>_s<S> as above
+#   m20_u<E>        that film pressed in passes until its porosity after unloading is 0.<E>
+#                   (calendering.mode = "unloaded_porosity", docs/calendering.md); e.g. the
+#                   industrial targets m20_u35_c110_y110_n1.5_d300_x_v0.4_s16 and m20_u30_...
 #   ..._c<C>        (before _v/_s) with compacting agglomerates: calendering.cb_compaction_pressure
 #                   C MPa; ..._c<C>_m<M> also calendering.cb_minimal_porosity M (docs/model.md
 #                   M-2.11); e.g. sg_p42.7_c120_v0.4_s16
@@ -84,6 +87,9 @@ for step in "$@"; do
     m20_dry) dry "$out/m20_dry_s$seed" ;;
     m20_e*) e=${step#m20_e}; e=${e%%_*}
       press "$out/m20_dry_s$seed" "$step" --set calendering.mode='"displacement"' \
+        --set calendering.target_porosity="0.$e" ;;
+    m20_u*) e=${step#m20_u}; e=${e%%_*}
+      press "$out/m20_dry_s$seed" "$step" --set calendering.mode='"unloaded_porosity"' \
         --set calendering.target_porosity="0.$e" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac
