@@ -9,6 +9,9 @@
 #   sg_p<P>         that film pressed to P MPa (pressure mode) and unloaded, P one of the
 #                   article's 19.8 42.7 79.1 159.4; sg_p<P>_v<V> at plate speed V m/s,
 #                   sg_p<P>_s<S> with calendering.cb_density_scaling S, _v<V>_s<S> both
+#   ng_dry          a film after Ngandjong et al. 2021 (examples/ngandjong2021.toml), dried by
+#                   DryDEM; ng_p<P> that film pressed to P MPa (pressure mode) and unloaded,
+#                   with the same _c/_y/_n/_d/_x/_v/_s tags as sg_p<P>
 #   m20_dry         the README main job's film (20.1 mg/cm2, 75 um box, embedded default)
 #   m20_e<E>        that film pressed to the porosity 0.<E> at peak (displacement mode)
 #                   and unloaded; m20_e<E>_v<V>_s<S> as above
@@ -83,6 +86,10 @@ for step in "$@"; do
     sg_dry) dry "$out/sg_dry_s$seed" "$here/examples/sangros2019.toml" ;;
     sg_p*) p=${step#sg_p}; p=${p%%_*}
       press "$out/sg_dry_s$seed" "$step" --set calendering.mode='"pressure"' \
+        --set calendering.target_pressure="$p MPa" ;;
+    ng_dry) dry "$out/ng_dry_s$seed" "$here/examples/ngandjong2021.toml" ;;
+    ng_p*) p=${step#ng_p}; p=${p%%_*}
+      press "$out/ng_dry_s$seed" "$step" --set calendering.mode='"pressure"' \
         --set calendering.target_pressure="$p MPa" ;;
     m20_dry) dry "$out/m20_dry_s$seed" ;;
     m20_e*) e=${step#m20_e}; e=${e%%_*}
