@@ -362,6 +362,24 @@ TEST(CalenderEndToEnd, ExtrudedAgglomeratesPassOnTheirSolidAndLeave) {
     }
     EXPECT_EQ(fuller, 0);
     EXPECT_GT(denser, 0) << "the receivers took the solid into their pores";
+    // Every bond made when drying ended is accounted for: still in the film (per particle, each
+    // twice) or gone with an extruded agglomerate; the broken ones count both.
+    const nlohmann::json& b = s["bonds"];
+    const std::size_t made = b["made"].get<std::size_t>();
+    EXPECT_EQ(made, b["cb_cb"].get<std::size_t>() + b["cb_ncm"].get<std::size_t>());
+    const std::vector<double> intact = column(out / "particle_bonds.csv", "bonds_intact"),
+                              gone = column(out / "particle_bonds.csv", "bonds_broken");
+    const double in_film = (std::accumulate(intact.begin(), intact.end(), 0.0) +
+                            std::accumulate(gone.begin(), gone.end(), 0.0)) /
+                           2.0;
+    const double left = b["left_with_extruded"]["intact"].get<double>() +
+                        b["left_with_extruded"]["broken"].get<double>();
+    EXPECT_GT(left, 0.0);
+    EXPECT_EQ(in_film + left, double(made));
+    EXPECT_EQ(std::accumulate(gone.begin(), gone.end(), 0.0) / 2.0 +
+                  b["left_with_extruded"]["broken"].get<double>(),
+              b["broken"].get<double>());
+    EXPECT_EQ(column(out / "compaction.csv", "bonds_broken").back(), b["broken"].get<double>());
 }
 
 TEST(CalenderEndToEnd, RefusesAMinimalPorosityAboveTheDriedOneOrBelowTheBinders) {

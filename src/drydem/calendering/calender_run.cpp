@@ -200,8 +200,13 @@ private:
     AgglomerateCompactionParams compaction_;
     AgglomerateExtrusionParams extrusion_;
     std::size_t extruded_ = 0, extruded_bonds_ = 0; ///< agglomerates, and their intact bonds
-    double extruded_mass_ = 0.0;                    ///< [kg]
-    double cb_mass_ = 0.0;                          ///< the CB agglomerates' mass as dried [kg]
+    std::size_t extruded_broken_bonds_ = 0; ///< broken bonds that left with them (still counted)
+    /// Bonds broken so far, those that left with extruded agglomerates included.
+    [[nodiscard]] std::size_t bonds_broken() const {
+        return sim_->bonds().broken() + extruded_broken_bonds_;
+    }
+    double extruded_mass_ = 0.0; ///< [kg]
+    double cb_mass_ = 0.0;       ///< the CB agglomerates' mass as dried [kg]
     /// max over the species of d sqrt(ρ), ρ with calendering.cb_density_scaling: the inertial
     /// number I = (v / h) d sqrt(ρ / p) of the most inert sphere is this times v / (h sqrt(p)).
     double inertia_scale_ = 0.0;
@@ -397,7 +402,7 @@ bool CalenderRun::phase_over() const {
 
 void CalenderRun::next_phase() {
     if (phase_ == Phase::hold) {
-        broken_at_peak_ = sim_->bonds().broken();
+        broken_at_peak_ = bonds_broken();
         r_.peak_thickness = peak_plate_ = sim_->plate_height();
         r_.peak_porosity = porosity_at(r_.peak_thickness);
         peak_sphere_fraction_ = sphere_fraction_at(r_.peak_thickness);
@@ -527,7 +532,7 @@ void CalenderRun::record() {
               sim_->settings().dt,
               inertial,
               double(sim_->bonds().intact()),
-              double(sim_->bonds().broken()),
+              double(bonds_broken()),
               cb_inner_porosity(),
               s.xx * 1e-6,
               s.yy * 1e-6,
@@ -601,7 +606,8 @@ void CalenderRun::extrude_agglomerates() {
     if (out.empty()) return;
     for (const std::size_t g : out) pass_on_solid(g, leaving);
     for (const Bond& b : sim_->bonds().bonds)
-        if (b.state.intact() && (leaving[b.i] || leaving[b.j])) ++extruded_bonds_;
+        if (leaving[b.i] || leaving[b.j])
+            ++(b.state.intact() ? extruded_bonds_ : extruded_broken_bonds_);
     sim_->remove_particles(out);
     extruded_ += out.size();
 }
@@ -835,17 +841,20 @@ json CalenderRun::summary() const {
 json CalenderRun::bonds_summary() const {
     if (c_.bond_youngs_modulus == 0.0)
         return {{"made", 0}, {"note", "no bonds (calendering.bond_youngs_modulus = 0)"}};
-    const std::size_t made = sim_->bonds().bonds.size(), broken = sim_->bonds().broken();
-    return {{"made", made},
-            {"cb_cb", bonding_.cb_cb},
-            {"cb_ncm", bonding_.cb_ncm},
-            {"candidates", bonding_.candidates},
-            {"saturated_candidates", bonding_.saturated},
-            {"binder_profile", binder_.source},
-            {"broken", broken},
-            {"broken_by_peak", broken_at_peak_},
-            {"broken_fraction", made ? double(broken) / double(made) : 0.0},
-            {"per_particle", "particle_bonds.csv"}};
+    // Made when drying ended; extruded agglomerates took theirs out of the network.
+    const std::size_t made = bonding_.cb_cb + bonding_.cb_ncm, broken = bonds_broken();
+    return {
+        {"made", made},
+        {"cb_cb", bonding_.cb_cb},
+        {"cb_ncm", bonding_.cb_ncm},
+        {"candidates", bonding_.candidates},
+        {"saturated_candidates", bonding_.saturated},
+        {"binder_profile", binder_.source},
+        {"broken", broken},
+        {"broken_by_peak", broken_at_peak_},
+        {"broken_fraction", made ? double(broken) / double(made) : 0.0},
+        {"left_with_extruded", {{"intact", extruded_bonds_}, {"broken", extruded_broken_bonds_}}},
+        {"per_particle", "particle_bonds.csv"}};
 }
 
 /// particle_bonds.csv: each particle's intact and broken bonds and its contacts at the end.
