@@ -48,7 +48,7 @@ completed() { [[ -f $1/summary.json ]] && grep -q '"status": "completed"' "$1/su
 dry() {  # $1 folder, rest: drydem run arguments
   local dir=$1
   shift
-  [[ -f $dir/final.csv ]] && return
+  completed "$dir" && return # a stopped run also leaves final.csv
   local resume=()
   [[ -d $dir/checkpoint ]] && resume=(--resume)
   if ((${#resume[@]})); then

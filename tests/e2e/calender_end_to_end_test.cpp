@@ -410,6 +410,15 @@ TEST(CalenderEndToEnd, RefusesAFolderWithoutADriedFilm) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("no final.csv"), std::string::npos) << e.what();
     }
+    // A stopped drying run leaves its film so far in final.csv; its summary says it failed.
+    const auto [run, out] = folders_for(c);
+    std::ofstream(run / "summary.json") << R"({"status": "failed", "error": "stopped"})";
+    try {
+        (void)run_calendering(c, {run, out, true, false, std::nullopt});
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("did not finish"), std::string::npos) << e.what();
+    }
 }
 
 } // namespace

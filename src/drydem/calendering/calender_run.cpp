@@ -265,6 +265,19 @@ ParticleStore CalenderRun::dried_film() {
         throw InputError(fmt::format("{}: no final.csv; calender a drying run that has finished "
                                      "(its folder holds final.csv)",
                                      o_.run_dir.string()));
+    // A stopped drying run also leaves final.csv (its film so far): its summary says so.
+    if (const fs::path summary = o_.run_dir / "summary.json"; fs::exists(summary)) {
+        std::ifstream in(summary);
+        const json s = json::parse(in, nullptr, false);
+        const std::string status =
+            s.is_object() && s.contains("status") && s["status"].is_string() ? s["status"] : "";
+        if (status != "completed")
+            throw InputError(fmt::format(
+                "{}: the drying run did not finish (summary.json status \"{}\"{}); calender a "
+                "finished run, or finish this one with drydem run --resume",
+                o_.run_dir.string(), status,
+                s.is_object() && s.contains("error") ? ": " + s["error"].dump() : ""));
+    }
     ParticleStore particles = particles_from_file(file, film_.recipe, film_.box);
     count_species(film_, particles);
     log_->info("DryDEM {} ({}) calendering {}: {} NCM + {} CB particles, box {:.4g} x {:.4g} um, "
