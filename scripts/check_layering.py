@@ -22,6 +22,7 @@ LAYERS = [
     ["dryer_model"],                   # the dryer model (uses Eq. 4 from setup/solids)
     ["forces"],                        # pair and body laws (and their list), their time scales
     ["neighbor"],                      # neighbour list, holding the pair laws' per-pair state
+    ["parallel"],                      # MPI: domain decomposition, halo exchanges of particles
     ["engine"],                        # the simulation: pair loop, integration, stability estimate
     ["analysis"],                      # structure analysis of a particle set
     ["output"],                        # writers of results: frames, series, dump, analysis, checkpoint

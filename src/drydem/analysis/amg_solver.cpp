@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/analysis/amg_solver.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/parallel/mpi_world.hpp"
 #include <HYPRE.h>
 #include <HYPRE_IJ_mv.h>
 #include <HYPRE_krylov.h>
@@ -17,18 +18,9 @@ namespace drydem::analysis {
 void start_amg_solver() {
     static std::once_flag once;
     std::call_once(once, [] {
-        int initialised = 0;
-        MPI_Initialized(&initialised);
-        if (!initialised) {
-            // One rank talks only to itself: skip the probing of networks (and its warnings on
-            // machines without them). A user's own OMPI_MCA_btl wins.
-            setenv("OMPI_MCA_btl", "self", 0);
-            // Serialized: the solves may run in a thread other than the one that started MPI (the
-            // analysis overlaps them with the pore sizes), never two at once.
-            int provided = 0;
-            if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided) != MPI_SUCCESS)
-                throw InputError("conduction solve: MPI (needed by hypre) did not start");
-        }
+        // Serialized MPI: the solves may run in a thread other than the one that started MPI
+        // (the analysis overlaps them with the pore sizes), never two at once.
+        parallel::start_mpi();
         HYPRE_Init();
     });
 }

@@ -11,6 +11,7 @@
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/io/output_folder.hpp"
 #include "drydem/io/units.hpp"
+#include "drydem/parallel/mpi_world.hpp"
 #include "drydem/drying/derived_checks.hpp"
 #include <CLI/CLI.hpp>
 #include <fmt/chrono.h>
@@ -484,6 +485,22 @@ int run_command(CommandLine& a) {
 
 } // namespace
 
+/// A simulating command started as one of several MPI ranks would run the same film on each into
+/// one folder: the engine does not step a decomposed film yet (docs/parallel.md).
+void refuse_several_ranks(const CommandLine& a) {
+    const int ranks = parallel::launcher_ranks();
+    if (ranks <= 1) return;
+    for (const CLI::App* command :
+         {a.run, a.calender, a.analyze, a.bench, a.study, a.calibrate, a.pool})
+        if (*command)
+            throw InputError(fmt::format(
+                "drydem {}: started as one of {} MPI ranks, but this build steps a film on one "
+                "rank only (the drying run does not use the domain decomposition yet: "
+                "docs/parallel.md). Start it without mpirun/srun, or with one rank; --threads "
+                "uses the cores of one machine",
+                command->get_name(), ranks));
+}
+
 int main(int argc, char** argv) {
     CommandLine a;
     a.cli.require_subcommand(0, 1);
@@ -509,6 +526,7 @@ int main(int argc, char** argv) {
                 std::cout << default_config_toml();
             return 0;
         }
+        refuse_several_ranks(a);
         if (*a.bench) return app::run_bench(a.bench_opt);
         if (*a.analyze) return analyze_command(a);
         if (*a.calender) {

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/parallel/decomposition.hpp"
+#include "drydem/core/error.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace drydem::parallel {
+
+namespace {
+
+int wrap_index(int i, int n) { return ((i % n) + n) % n; }
+
+/// Distance along one periodic axis of length l from coordinate x to the interval [x0, x0 + w).
+double axis_distance(double x, double x0, double w, double l) {
+    double u = std::fmod(x - x0, l);
+    if (u < 0.0) u += l;
+    return u < w ? 0.0 : std::min(u - w, l - u);
+}
+
+} // namespace
+
+int Decomposition::rank_at(int ix, int iy) const {
+    return wrap_index(iy, py) * px + wrap_index(ix, px);
+}
+
+int Decomposition::owner(const Vec3& x) const {
+    Vec3 w = x;
+    box.wrap(w);
+    const int ix = std::clamp(int(w.x / width_x()), 0, px - 1);
+    const int iy = std::clamp(int(w.y / width_y()), 0, py - 1);
+    return rank_at(ix, iy);
+}
+
+std::vector<int> Decomposition::neighbors(int rank) const {
+    const int ix = rank % px, iy = rank / px;
+    std::vector<int> out;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int r = rank_at(ix + dx, iy + dy);
+            if (r != rank) out.push_back(r);
+        }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+double Decomposition::distance2(int rank, const Vec3& x) const {
+    const int ix = rank % px, iy = rank / px;
+    const double dx = axis_distance(x.x, ix * width_x(), width_x(), box.lx);
+    const double dy = axis_distance(x.y, iy * width_y(), width_y(), box.ly);
+    return dx * dx + dy * dy;
+}
+
+Decomposition decompose(const Box& box, int ranks, double reach) {
+    if (ranks < 1) throw InputError(fmt::format("MPI: {} ranks; at least 1 is needed", ranks));
+    if (!(reach > 0.0) || !std::isfinite(reach))
+        throw InputError(fmt::format("MPI: the reach between subdomains is {} m; it must be a "
+                                     "positive length (interaction range plus skin)",
+                                     reach));
+    Decomposition best{box, 0, 0};
+    double best_cut = std::numeric_limits<double>::infinity();
+    for (int px = ranks; px >= 1; --px) {
+        if (ranks % px != 0) continue;
+        const int py = ranks / px;
+        const bool fits_x = px == 1 || box.lx / px >= reach;
+        const bool fits_y = py == 1 || box.ly / py >= reach;
+        if (!fits_x || !fits_y) continue;
+        // Ghost area per rank: its rectangle grown by `reach` across each cut face, less itself.
+        const double w = box.lx / px, h = box.ly / py;
+        const double cut = (w + (px > 1 ? 2.0 * reach : 0.0)) * (h + (py > 1 ? 2.0 * reach : 0.0)) -
+                           w * h;
+        if (cut < best_cut) {
+            best_cut = cut;
+            best = {box, px, py};
+        }
+    }
+    if (best.px == 0) {
+        const int max_x = std::max(1, int(box.lx / reach)),
+                  max_y = std::max(1, int(box.ly / reach));
+        throw InputError(fmt::format(
+            "MPI: {} ranks cannot split the {:.4g} x {:.4g} um cell into subdomains at least "
+            "{:.4g} um wide (the reach at which a neighbouring rank must see a particle: the "
+            "largest interaction range plus skin plus the radii). Allowed: px x py ranks with "
+            "px <= {} and py <= {} (at most {} ranks); use fewer ranks or a wider cell",
+            ranks, box.lx * 1e6, box.ly * 1e6, reach * 1e6, max_x, max_y, max_x * max_y));
+    }
+    return best;
+}
+
+} // namespace drydem::parallel

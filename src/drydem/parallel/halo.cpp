@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/parallel/halo.hpp"
+#include <fmt/format.h>
+#include <algorithm>
+#include <climits>
+
+namespace drydem::parallel {
+
+namespace {
+constexpr int kSizeTag = 7101, kDataTag = 7102;
+
+/// What update_ghosts sends per ghost: position, velocity, angular velocity.
+struct Motion {
+    Vec3 position, velocity, omega;
+};
+} // namespace
+
+ParticleRecord record_of(const ParticleStore& p, std::size_t i) {
+    return {p.id[i],          p.species[i],  p.radius[i],   p.density[i], p.mass[i],  p.inv_mass[i],
+            p.inv_inertia[i], p.position[i], p.velocity[i], p.omega[i],   p.force[i], p.torque[i]};
+}
+
+void append_record(ParticleStore& p, const ParticleRecord& r) {
+    p.id.push_back(r.id);
+    p.species.push_back(r.species);
+    p.radius.push_back(r.radius);
+    p.density.push_back(r.density);
+    p.mass.push_back(r.mass);
+    p.inv_mass.push_back(r.inv_mass);
+    p.inv_inertia.push_back(r.inv_inertia);
+    p.position.push_back(r.position);
+    p.velocity.push_back(r.velocity);
+    p.omega.push_back(r.omega);
+    p.force.push_back(r.force);
+    p.torque.push_back(r.torque);
+}
+
+Halo::Halo(Decomposition d, MPI_Comm comm) : d_(d), comm_(comm) {
+    int size = 0;
+    MPI_Comm_rank(comm_, &rank_);
+    MPI_Comm_size(comm_, &size);
+    if (size != d_.ranks())
+        throw InputError(fmt::format("parallel::Halo: {} ranks run a decomposition into {} x {} "
+                                     "subdomains",
+                                     size, d_.px, d_.py));
+    neighbours_ = d_.neighbors(rank_);
+}
+
+int Halo::slot_of(int rank) const {
+    const auto it = std::lower_bound(neighbours_.begin(), neighbours_.end(), rank);
+    return (it != neighbours_.end() && *it == rank) ? int(it - neighbours_.begin()) : -1;
+}
+
+void Halo::throw_not_neighbour(const ParticleStore& p, std::size_t i, int owner) const {
+    throw RunError(
+        fmt::format(
+            "particle {} at ({:.4g}, {:.4g}) um moved from the subdomain of rank {} into that of "
+            "rank {}, which is not a neighbour: it travelled more than a subdomain ({:.4g} x "
+            "{:.4g} "
+            "um) between two neighbour-list rebuilds. Likely cause: a blow-up (see the time step)",
+            p.id[i], p.position[i].x * 1e6, p.position[i].y * 1e6, rank_, owner, d_.width_x() * 1e6,
+            d_.width_y() * 1e6),
+        "blow_up");
+}
+
+void Halo::drop_ghosts(ParticleStore& p) const {
+    if (p.size() == owned_) return;
+    std::vector<std::uint32_t> owned(owned_);
+    for (std::size_t i = 0; i < owned_; ++i) owned[i] = std::uint32_t(i);
+    p.permute(owned);
+}
+
+void Halo::make_ghosts(ParticleStore& p, const std::vector<double>& reach) {
+    if (p.size() != owned_ || reach.size() != owned_)
+        throw RunError("parallel::Halo::make_ghosts: the store must hold the owned particles "
+                       "only, with one reach each");
+    std::vector<Bytes> send(neighbours_.size());
+    ghost_send_.assign(neighbours_.size(), {});
+    for (std::size_t i = 0; i < owned_; ++i) {
+        const double r2 = reach[i] * reach[i];
+        for (std::size_t k = 0; k < neighbours_.size(); ++k)
+            if (d_.distance2(neighbours_[k], p.position[i]) < r2) {
+                ghost_send_[k].push_back(std::uint32_t(i));
+                put(send[k], record_of(p, i));
+            }
+    }
+    const std::vector<Bytes> got = exchange(send);
+    ghost_begin_.assign(neighbours_.size(), 0);
+    ghost_count_.assign(neighbours_.size(), 0);
+    for (std::size_t k = 0; k < got.size(); ++k) {
+        if (got[k].size() % sizeof(ParticleRecord) != 0)
+            throw RunError("parallel::Halo: a ghost message is not a whole number of particles");
+        ghost_begin_[k] = p.size();
+        ghost_count_[k] = got[k].size() / sizeof(ParticleRecord);
+        for (std::size_t at = 0; at < got[k].size();) {
+            ParticleRecord r = take<ParticleRecord>(got[k], at);
+            r.force = r.torque = Vec3{}; // a ghost's forces are its owner's business
+            append_record(p, r);
+        }
+    }
+}
+
+void Halo::update_ghosts(ParticleStore& p) {
+    std::vector<Bytes> send(neighbours_.size());
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        send[k].reserve(ghost_send_[k].size() * sizeof(Motion));
+        for (std::uint32_t i : ghost_send_[k])
+            put(send[k], Motion{p.position[i], p.velocity[i], p.omega[i]});
+    }
+    std::vector<std::size_t> expected(neighbours_.size());
+    for (std::size_t k = 0; k < neighbours_.size(); ++k)
+        expected[k] = ghost_count_[k] * sizeof(Motion);
+    const std::vector<Bytes> got = exchange(send, &expected);
+    for (std::size_t k = 0; k < got.size(); ++k) {
+        if (got[k].size() != ghost_count_[k] * sizeof(Motion))
+            throw RunError(fmt::format("parallel::Halo: rank {} sent {} bytes for {} ghosts",
+                                       neighbours_[k], got[k].size(), ghost_count_[k]));
+        std::size_t at = 0;
+        for (std::size_t g = ghost_begin_[k]; g < ghost_begin_[k] + ghost_count_[k]; ++g) {
+            const Motion m = take<Motion>(got[k], at);
+            p.position[g] = m.position;
+            p.velocity[g] = m.velocity;
+            p.omega[g] = m.omega;
+        }
+    }
+}
+
+void Halo::update_ghost_values(std::vector<double>& v, std::size_t per_particle) {
+    const std::size_t row = per_particle * sizeof(double);
+    std::vector<Bytes> send(neighbours_.size());
+    std::vector<std::size_t> expected(neighbours_.size());
+    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
+        send[k].resize(ghost_send_[k].size() * row);
+        std::byte* out = send[k].data();
+        for (std::uint32_t i : ghost_send_[k]) {
+            std::memcpy(out, v.data() + std::size_t(i) * per_particle, row);
+            out += row;
+        }
+        expected[k] = ghost_count_[k] * row;
+    }
+    const std::vector<Bytes> got = exchange(send, &expected);
+    for (std::size_t k = 0; k < got.size(); ++k)
+        if (!got[k].empty())
+            std::memcpy(v.data() + ghost_begin_[k] * per_particle, got[k].data(), got[k].size());
+}
+
+double Halo::all_max(double v) const {
+    double out = v;
+    MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, comm_);
+    return out;
+}
+
+double Halo::all_sum(double v) const {
+    double out = v;
+    MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, comm_);
+    return out;
+}
+
+std::uint64_t Halo::all_sum(std::uint64_t v) const {
+    std::uint64_t out = v;
+    MPI_Allreduce(&v, &out, 1, MPI_UINT64_T, MPI_SUM, comm_);
+    return out;
+}
+
+std::string Halo::first_message(const std::string& local) const {
+    const int mine = local.empty() ? d_.ranks() : rank_;
+    int first = mine;
+    MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm_);
+    if (first == d_.ranks()) return {};
+    std::uint64_t length = local.size();
+    MPI_Bcast(&length, 1, MPI_UINT64_T, first, comm_);
+    std::string out = rank_ == first ? local : std::string(length, ' ');
+    MPI_Bcast(out.data(), int(length), MPI_CHAR, first, comm_);
+    return out;
+}
+
+namespace {
+/// The rank with the largest value (MPI_MAXLOC: ties go to the lowest rank).
+int rank_of_max(double value, int rank, MPI_Comm comm) {
+    struct {
+        double value;
+        int rank;
+    } mine{value, rank}, best{};
+    MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
+    return best.rank;
+}
+} // namespace
+
+std::string Halo::message_of_max(double value, const std::string& local) const {
+    const int from = rank_of_max(value, rank_, comm_);
+    std::uint64_t length = local.size();
+    MPI_Bcast(&length, 1, MPI_UINT64_T, from, comm_);
+    std::string out = rank_ == from ? local : std::string(length, ' ');
+    if (length > 0) MPI_Bcast(out.data(), int(length), MPI_CHAR, from, comm_);
+    return out;
+}
+
+std::uint32_t Halo::id_of_max(double value, std::uint32_t id) const {
+    std::uint32_t out = id;
+    MPI_Bcast(&out, 1, MPI_UINT32_T, rank_of_max(value, rank_, comm_), comm_);
+    return out;
+}
+
+std::vector<Halo::Bytes> Halo::exchange(const std::vector<Bytes>& send,
+                                        const std::vector<std::size_t>* expected) {
+    const double t0 = MPI_Wtime();
+    const std::size_t n = neighbours_.size();
+    std::vector<std::uint64_t> out_size(n), in_size(n);
+    std::vector<MPI_Request> req;
+    req.reserve(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+        out_size[k] = send[k].size();
+        if (out_size[k] > std::uint64_t(INT_MAX))
+            throw RunError(fmt::format("parallel::Halo: {} bytes for rank {} exceed one MPI "
+                                       "message; use more ranks",
+                                       out_size[k], neighbours_[k]));
+    }
+    if (expected) {
+        // Sizes both sides know (the ghost update): no size round.
+        for (std::size_t k = 0; k < n; ++k) in_size[k] = (*expected)[k];
+    } else {
+        for (std::size_t k = 0; k < n; ++k) {
+            req.emplace_back();
+            MPI_Irecv(&in_size[k], 1, MPI_UINT64_T, neighbours_[k], kSizeTag, comm_, &req.back());
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            req.emplace_back();
+            MPI_Isend(&out_size[k], 1, MPI_UINT64_T, neighbours_[k], kSizeTag, comm_, &req.back());
+        }
+        MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE);
+        req.clear();
+        counters_.messages += n;
+        counters_.bytes += n * sizeof(std::uint64_t);
+    }
+    std::vector<Bytes> got(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        got[k].resize(in_size[k]);
+        if (in_size[k] == 0) continue;
+        req.emplace_back();
+        MPI_Irecv(got[k].data(), int(in_size[k]), MPI_BYTE, neighbours_[k], kDataTag, comm_,
+                  &req.back());
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (send[k].empty()) continue;
+        req.emplace_back();
+        MPI_Isend(send[k].data(), int(send[k].size()), MPI_BYTE, neighbours_[k], kDataTag, comm_,
+                  &req.back());
+        ++counters_.messages;
+        counters_.bytes += send[k].size();
+    }
+    MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE);
+    ++counters_.exchanges;
+    counters_.seconds += MPI_Wtime() - t0;
+    return got;
+}
+
+} // namespace drydem::parallel

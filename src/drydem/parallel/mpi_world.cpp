@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/parallel/mpi_world.hpp"
+#include "drydem/core/error.hpp"
+#include <mpi.h>
+#include <cstdlib>
+#include <mutex>
+#include <string>
+
+namespace drydem::parallel {
+
+namespace {
+
+int env_int(const char* name) {
+    const char* v = std::getenv(name);
+    if (!v || !*v) return 0;
+    char* end = nullptr;
+    const long n = std::strtol(v, &end, 10);
+    return (*end == '\0' && n > 0 && n < (1L << 24)) ? int(n) : 0;
+}
+
+bool started_here = false;
+
+} // namespace
+
+int launcher_ranks() {
+    if (int n = env_int("OMPI_COMM_WORLD_SIZE")) return n;
+    if (int n = env_int("PMI_SIZE")) return n;
+    if (int n = env_int("PMIX_SIZE")) return n;
+    // srun without a PMI plugin that exports a size: a job step's task count.
+    if (std::getenv("SLURM_STEP_ID"))
+        if (int n = env_int("SLURM_NTASKS")) return n;
+    return 1;
+}
+
+bool launched() {
+    return env_int("OMPI_COMM_WORLD_SIZE") || env_int("PMI_SIZE") || env_int("PMIX_SIZE");
+}
+
+void start_mpi() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        int initialised = 0;
+        MPI_Initialized(&initialised);
+        if (initialised) return;
+        // One rank talks only to itself: skip the probing of networks (and its warnings on
+        // machines without them). A user's own OMPI_MCA_btl wins.
+        if (launcher_ranks() == 1) setenv("OMPI_MCA_btl", "self", 0);
+        int provided = 0;
+        if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided) != MPI_SUCCESS)
+            throw RunError("MPI did not start (MPI_Init_thread failed)");
+        if (provided < MPI_THREAD_SERIALIZED)
+            throw RunError("MPI started without thread support (MPI_THREAD_SERIALIZED needed: "
+                           "the analysis calls MPI from a worker thread)");
+        started_here = true;
+    });
+}
+
+void finish_mpi() {
+    int initialised = 0, finalised = 0;
+    MPI_Initialized(&initialised);
+    MPI_Finalized(&finalised);
+    if (!initialised || finalised || !started_here) return;
+    if (launched()) MPI_Finalize();
+}
+
+World world() {
+    int initialised = 0, finalised = 0;
+    MPI_Initialized(&initialised);
+    MPI_Finalized(&finalised);
+    if (!initialised || finalised) return {};
+    World w;
+    MPI_Comm_rank(MPI_COMM_WORLD, &w.rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &w.size);
+    return w;
+}
+
+} // namespace drydem::parallel

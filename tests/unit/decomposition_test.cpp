@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+// The domain decomposition's geometry (parallel/decomposition.hpp): the grid it picks, ownership,
+// neighbours and the periodic distance to a subdomain, and the refusal of too many ranks.
+#include "drydem/core/error.hpp"
+#include "drydem/parallel/decomposition.hpp"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <random>
+
+using namespace drydem;
+using namespace drydem::parallel;
+
+namespace {
+const Box kBox{75e-6, 75e-6};
+constexpr double kReach = 12e-6;
+} // namespace
+
+TEST(Decomposition, PicksTheGridWithTheLeastGhostArea) {
+    EXPECT_EQ(decompose(kBox, 1, kReach).px, 1);
+    const auto d2 = decompose(kBox, 2, kReach);
+    EXPECT_EQ(d2.px * d2.py, 2);
+    EXPECT_EQ(d2.px, 2); // ties go to x
+    // 4 ranks, reach 12 um: 4 x 1 holds 2 x 12 x 75 = 1800 um2 of ghosts per rank, 2 x 2
+    // (37.5 + 24)^2 - 37.5^2 = 2376 um2 (its corners too).
+    const auto d4 = decompose(kBox, 4, kReach);
+    EXPECT_EQ(d4.px, 4);
+    EXPECT_EQ(d4.py, 1);
+    // With a reach of 20 um, 18.75 um wide strips are too narrow: 2 x 2.
+    const auto d4_wide = decompose(kBox, 4, 20e-6);
+    EXPECT_EQ(d4_wide.px, 2);
+    EXPECT_EQ(d4_wide.py, 2);
+    // 16 ranks: only 4 x 4 leaves subdomains 12 um wide.
+    const auto d16 = decompose(kBox, 16, kReach);
+    EXPECT_EQ(d16.px, 4);
+    EXPECT_EQ(d16.py, 4);
+    // A long cell is cut across its length.
+    const auto long_cell = decompose(Box{300e-6, 75e-6}, 4, kReach);
+    EXPECT_EQ(long_cell.px, 4);
+    EXPECT_EQ(long_cell.py, 1);
+    // 6 ranks: 6 x 1 (12.5 um strips: 1800 um2) before 3 x 2 (49 x 61.5 - 25 x 37.5 = 2076).
+    const auto d6 = decompose(kBox, 6, kReach);
+    EXPECT_EQ(d6.px, 6);
+    EXPECT_EQ(d6.py, 1);
+}
+
+TEST(Decomposition, RefusesSubdomainsNarrowerThanTheReachNamingTheNumbers) {
+    // 75 um / 12 um: at most 6 per direction. 7 ranks is a prime > 6: 7 x 1 leaves 10.7 um.
+    try {
+        (void)decompose(kBox, 7, kReach);
+        FAIL() << "7 ranks accepted";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("7 ranks"), std::string::npos) << what;
+        EXPECT_NE(what.find("12 um"), std::string::npos) << what;
+        EXPECT_NE(what.find("at most 36 ranks"), std::string::npos) << what;
+    }
+    EXPECT_NO_THROW((void)decompose(kBox, 36, kReach));
+    EXPECT_THROW((void)decompose(kBox, 49, kReach), InputError);
+    EXPECT_THROW((void)decompose(kBox, 0, kReach), InputError);
+    EXPECT_THROW((void)decompose(kBox, 2, NAN), InputError);
+    EXPECT_THROW((void)decompose(kBox, 2, -1.0), InputError);
+}
+
+TEST(Decomposition, EveryPointHasOneOwnerWhoseSubdomainHoldsIt) {
+    const Decomposition d{kBox, 3, 2};
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.5 * kBox.lx, 2.5 * kBox.lx);
+    for (int k = 0; k < 2000; ++k) {
+        const Vec3 x{u(rng), u(rng), 1e-6};
+        const int owner = d.owner(x);
+        ASSERT_GE(owner, 0);
+        ASSERT_LT(owner, d.ranks());
+        EXPECT_EQ(d.distance2(owner, x), 0.0);
+        int inside = 0;
+        for (int r = 0; r < d.ranks(); ++r) inside += d.distance2(r, x) == 0.0 ? 1 : 0;
+        EXPECT_EQ(inside, 1) << "x = " << x.x << ", " << x.y;
+    }
+    // The upper edge belongs to the first subdomain again (periodic).
+    EXPECT_EQ(d.owner(Vec3{kBox.lx, kBox.ly, 0.0}), 0);
+}
+
+TEST(Decomposition, PeriodicDistanceToASubdomainMatchesTheImages) {
+    const Decomposition d{kBox, 2, 2};
+    // Rank 0 holds [0, 37.5) x [0, 37.5) um; a point at x = 74 um is 1 um from it through x = 0.
+    EXPECT_NEAR(std::sqrt(d.distance2(0, Vec3{74e-6, 10e-6, 0.0})), 1e-6, 1e-15);
+    EXPECT_NEAR(std::sqrt(d.distance2(0, Vec3{40e-6, 10e-6, 0.0})), 2.5e-6, 1e-15);
+    // Corner: 1 um in x and 2 um in y through both periodic faces.
+    EXPECT_NEAR(std::sqrt(d.distance2(0, Vec3{74e-6, 73e-6, 0.0})), std::sqrt(5.0) * 1e-6, 1e-15);
+    // Brute force over the nine images of the rectangle.
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u(0.0, 75e-6);
+    for (int k = 0; k < 500; ++k) {
+        const Vec3 x{u(rng), u(rng), 0.0};
+        for (int r = 0; r < 4; ++r) {
+            const double x0 = (r % 2) * 37.5e-6, y0 = (r / 2) * 37.5e-6;
+            double best = INFINITY;
+            for (int ix = -1; ix <= 1; ++ix)
+                for (int iy = -1; iy <= 1; ++iy) {
+                    const double lo_x = x0 + ix * kBox.lx, lo_y = y0 + iy * kBox.ly;
+                    const double dx = std::max({lo_x - x.x, 0.0, x.x - (lo_x + 37.5e-6)});
+                    const double dy = std::max({lo_y - x.y, 0.0, x.y - (lo_y + 37.5e-6)});
+                    best = std::min(best, dx * dx + dy * dy);
+                }
+            EXPECT_NEAR(d.distance2(r, x), best, 1e-24);
+        }
+    }
+}
+
+TEST(Decomposition, NeighboursAreSymmetricUniqueAndNeverSelf) {
+    for (auto [px, py] : {std::pair{1, 1}, {2, 1}, {1, 2}, {2, 2}, {3, 2}, {4, 4}}) {
+        const Decomposition d{kBox, px, py};
+        for (int r = 0; r < d.ranks(); ++r) {
+            const auto nb = d.neighbors(r);
+            for (std::size_t k = 0; k < nb.size(); ++k) {
+                EXPECT_NE(nb[k], r);
+                if (k > 0) {
+                    EXPECT_LT(nb[k - 1], nb[k]);
+                }
+                const auto back = d.neighbors(nb[k]);
+                EXPECT_NE(std::find(back.begin(), back.end(), r), back.end());
+            }
+        }
+        const std::size_t expect = std::size_t(std::min(px, 3) * std::min(py, 3) - 1);
+        EXPECT_EQ(d.neighbors(0).size(), expect) << px << " x " << py;
+    }
+}
