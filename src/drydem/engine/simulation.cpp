@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/engine/simulation.hpp"
 #include "drydem/core/error.hpp"
+#include "drydem/parallel/mpi_world.hpp"
 #include <fmt/format.h>
 #include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <unordered_map>
 
 namespace drydem {
 
@@ -15,12 +17,13 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
       liquid_level_(settings.initial_liquid_level) {
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     substrate_on_ = ff_.substrate_on();
+    for (std::size_t i = 0; i < p_.size(); ++i) box_.wrap(p_.position[i]);
+    if (settings_.ranks > 1) decompose();
     allocate_integrator();
     stats_.layer_top = p_.size() ? -INFINITY : 0.0;
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-        box_.wrap(p_.position[i]);
+    for (std::size_t i = 0; i < owned(); ++i)
         stats_.layer_top = std::max(stats_.layer_top, p_.position[i].z + p_.radius[i]);
-    }
+    if (halo_) stats_.layer_top = halo_->all_max(stats_.layer_top);
     compute_forces();
 }
 
@@ -31,6 +34,9 @@ Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSett
       force_rebuild_(state.force_rebuild), stats_(state.stats),
       rebuilds_since_sort_(state.rebuilds_since_sort) {
     settings_.dt = state.dt;
+    if (settings_.ranks > 1)
+        throw InputError("resuming a checkpoint on several MPI ranks is not there yet "
+                         "(docs/parallel.md)");
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     substrate_on_ = ff_.substrate_on();
     if (body_state_.size() != p_.size())
@@ -64,6 +70,52 @@ void Simulation::allocate_integrator() {
     block_.assign(n, {});
     accel_.assign(n, {});
     alpha_.assign(n, {});
+}
+
+double Simulation::owner_range_bound(std::size_t i) const {
+    // Upper bound of the range an owner can have: partners are never larger than the owner.
+    double r = 0.0;
+    const int si = p_.species[i];
+    for (int sj = 0; sj < ff_.species_count; ++sj)
+        r = std::max(r, interaction_range(ff_.pair_params(si, sj), p_.radius[i], p_.radius[i]));
+    return r;
+}
+
+void Simulation::decompose() {
+    if (quasi_static())
+        throw InputError("numerics.integrator = \"quasi_static\" does not run on several MPI "
+                         "ranks yet (docs/parallel.md); use \"semi_implicit\" or \"explicit\"");
+    const parallel::World w = parallel::world();
+    if (w.size != settings_.ranks)
+        throw InputError(fmt::format("the engine was asked for {} MPI ranks; MPI runs {}",
+                                     settings_.ranks, w.size));
+    // Every rank holds the whole set here: the widest reach needs no reduction.
+    double r_max = 0.0, range_max = 0.0;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        r_max = std::max(r_max, p_.radius[i]);
+        range_max = std::max(range_max, owner_range_bound(i));
+    }
+    const double reach = 2.0 * r_max + range_max + settings_.skin;
+    halo_.emplace(parallel::decompose(box_, w.size, reach), MPI_COMM_WORLD);
+    halo_->keep_owned(p_, body_state_);
+}
+
+std::pair<double, double> Simulation::largest_radius_and_range() const {
+    double r_max = 0.0, range_max = 0.0;
+    for (std::size_t i = 0; i < owned(); ++i) {
+        r_max = std::max(r_max, p_.radius[i]);
+        range_max = std::max(range_max, owner_range_bound(i));
+    }
+    if (halo_) return {halo_->all_max(r_max), halo_->all_max(range_max)};
+    return {r_max, range_max};
+}
+
+void Simulation::clear_ghost_forces() {
+    for (std::size_t g = owned(); g < p_.size(); ++g) {
+        p_.force[g] = Vec3{};
+        p_.torque[g] = Vec3{};
+        if (semi_implicit()) block_[g] = SelfBlock{};
+    }
 }
 
 std::vector<std::int32_t> Simulation::coordination() const {
@@ -176,6 +228,7 @@ void Simulation::remove_particles(const std::vector<std::size_t>& which) {
     if (which.empty()) return;
     if (settings_.integrator != Integrator::explicit_verlet)
         throw RunError("particles can leave the packing only with the explicit integrator");
+    if (halo_) throw RunError("particles cannot leave the packing on several MPI ranks yet");
     const std::size_t n = p_.size();
     std::vector<std::uint32_t> new_index(n, 0);
     for (const std::size_t i : which) new_index.at(i) = UINT32_MAX;
@@ -203,8 +256,74 @@ void Simulation::remove_particles(const std::vector<std::size_t>& which) {
 }
 
 EngineState Simulation::state() const {
+    if (halo_)
+        throw RunError("a checkpoint of a film on several MPI ranks is not there yet "
+                       "(docs/parallel.md)");
     return {p_,           body_state_, nl_.state(), step_,  time_,          liquid_level_,
             settings_.dt, stats_,      accel_,      alpha_, force_rebuild_, rebuilds_since_sort_};
+}
+
+// Under a decomposition (docs/parallel.md): the pair states of this rank's list, keyed by ids,
+// with those of every particle that changes rank sent along to its new owner (a pair is computed
+// by the owners of its two particles, so the new owner may never have seen it); then migration,
+// the ghosts, and the list over owned particles and ghosts, carrying the states over by ids. No
+// re-sort: it would mix ghosts into the owned particles.
+template <class RangeFn, class OwnerRangeFn>
+void Simulation::rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range) {
+    parallel::Halo& halo = *halo_;
+    const parallel::Decomposition& d = halo.decomposition();
+    const std::size_t own = halo.owned();
+    std::vector<NeighborList::Entry> entries;
+    if (nl_.owners() == p_.size()) entries = nl_.state_entries(p_);
+    const std::vector<int>& nb = halo.neighbors();
+    std::unordered_map<std::uint32_t, std::size_t> leaving; // id -> neighbour slot
+    for (std::size_t i = 0; i < own; ++i) {
+        const int r = d.owner(p_.position[i]);
+        const auto k = std::size_t(std::lower_bound(nb.begin(), nb.end(), r) - nb.begin());
+        if (r != halo.rank() && k < nb.size() && nb[k] == r) leaving.emplace(p_.id[i], k);
+    }
+    std::vector<std::vector<NeighborList::Entry>> travel(nb.size());
+    if (!leaving.empty())
+        for (const NeighborList::Entry& e : entries)
+            for (const std::uint32_t id : {e.owner_id, e.partner_id})
+                if (const auto it = leaving.find(id); it != leaving.end())
+                    travel[it->second].push_back(e);
+    for (const auto& got : halo.exchange_items(travel))
+        entries.insert(entries.end(), got.begin(), got.end());
+    // Migration with everything the next steps read of a particle.
+    body_state_.resize(own);
+    if (semi_implicit()) {
+        body_resistance_.resize(own);
+        accel_.resize(own);
+        alpha_.resize(own);
+        halo.migrate(p_, body_state_, body_resistance_, accel_, alpha_);
+    } else {
+        halo.migrate(p_, body_state_);
+    }
+    const auto [r_max, range_max] = largest_radius_and_range();
+    std::vector<double> reach(halo.owned());
+    for (std::size_t i = 0; i < reach.size(); ++i)
+        reach[i] = p_.radius[i] + r_max + range_max + settings_.skin;
+    halo.make_ghosts(p_, reach);
+    const std::size_t n = p_.size();
+    body_state_.resize(n);
+    if (semi_implicit()) {
+        body_resistance_.resize(n);
+        accel_.resize(n);
+        alpha_.resize(n);
+        block_.assign(n, SelfBlock{});
+    }
+    if (threads_ > 1)
+        for (ThreadBuffer& b : buffer_) {
+            b.force.assign(n, {});
+            b.torque.assign(n, {});
+            if (semi_implicit()) b.block.assign(n, {});
+            b.marked.assign(n, 0);
+            b.touched.clear();
+            b.touched.reserve(n);
+        }
+    nl_.carry_from(std::move(entries));
+    nl_.build(p_, box_, range, owner_range, false, halo.owned());
 }
 
 void Simulation::rebuild_neighbors() {
@@ -212,20 +331,15 @@ void Simulation::rebuild_neighbors() {
         settings_.sort_every > 0 &&
         (nl_.builds() == 0 || ++rebuilds_since_sort_ >= std::uint64_t(settings_.sort_every));
     if (sort) rebuilds_since_sort_ = 0;
-    // Upper bound of the range an owner can have: partners are never larger than the owner.
-    auto owner_range = [&](std::size_t i) {
-        double r = 0.0;
-        const int si = p_.species[i];
-        for (int sj = 0; sj < ff_.species_count; ++sj)
-            r = std::max(r, interaction_range(ff_.pair_params(si, sj), p_.radius[i], p_.radius[i]));
-        return r;
-    };
+    auto owner_range = [&](std::size_t i) { return owner_range_bound(i); };
     auto range = [&](std::size_t i, std::size_t j) {
         return interaction_range(ff_.pair_params(p_.species[i], p_.species[j]), p_.radius[i],
                                  p_.radius[j]);
     };
     const double t0 = omp_get_wtime();
-    if (sort) {
+    if (halo_) {
+        rebuild_decomposed(range, owner_range);
+    } else if (sort) {
         // The body laws' states and (semi-implicit) resistances are kept in storage order: carry
         // them to the new order by id.
         std::vector<std::uint32_t> ids = p_.id;
@@ -259,16 +373,20 @@ void Simulation::compute_forces() {
     if (quasi_static()) return assemble_quasi_static();
     std::size_t wall_contacts = 0;
     double wall_overlap = 0.0;
+    const std::size_t own = owned();
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(+ : wall_contacts) reduction(max : wall_overlap)
-    for (std::size_t i = 0; i < p_.size(); ++i) body_forces(i, wall_contacts, wall_overlap);
+    for (std::size_t i = 0; i < own; ++i) body_forces(i, wall_contacts, wall_overlap);
+    clear_ghost_forces();
     pair_forces(wall_contacts, wall_overlap);
     if (semi_implicit()) {
 #pragma omp parallel for schedule(static) num_threads(threads_)
-        for (std::size_t i = 0; i < p_.size(); ++i) implicit_acceleration(i);
+        for (std::size_t i = 0; i < own; ++i) implicit_acceleration(i);
     }
 }
 
 void Simulation::set_bonds(BondNetwork bonds) {
+    if (halo_ && !bonds.bonds.empty())
+        throw InputError("solid bonds do not run on several MPI ranks yet (docs/parallel.md)");
     if (!bonds.bonds.empty() && settings_.integrator != Integrator::explicit_verlet)
         throw InputError("solid bonds need the explicit integrator (numerics.integrator = "
                          "\"explicit\"): their damping is not part of the implicit steps");
@@ -337,6 +455,11 @@ void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
         pair_loop<true>(contacts, max_overlap);
     else
         pair_loop<false>(contacts, max_overlap);
+    if (halo_) {
+        contacts = halo_->all_sum(std::uint64_t(contacts));
+        wall_contacts = halo_->all_sum(std::uint64_t(wall_contacts));
+        max_overlap = halo_->all_max(max_overlap);
+    }
     stats_.contacts = contacts;
     stats_.wall_contacts = wall_contacts;
     stats_.max_overlap_rel = max_overlap;
@@ -426,6 +549,7 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
     const std::size_t species_count = std::size_t(ff_.species_count);
     const PairParams* pair_table = ff_.pair.data();
     const std::size_t threads = std::size_t(threads_);
+    const std::size_t owned_rows = owned(); // a ghost's row is counted by the ghost's owner
 
     // Pair loop over the half list. Thread t owns the rows [lo, hi) and writes the forces,
     // torques and self-blocks of its own particles straight into the store (which holds the
@@ -475,7 +599,7 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
                     make_pair_geometry(d, std::sqrt(dist2), ri, rj, p.mass[i], p.mass[j],
                                        p.velocity[i], p.velocity[j], p.omega[i], p.omega[j]);
                 if (g.gap < 0.0) {
-                    ++contacts;
+                    contacts += i < owned_rows;
                     max_overlap = std::max(max_overlap, -g.gap / std::min(ri, rj));
                 }
                 const bool local = j - lo < hi - lo; // j in [lo, hi)
@@ -533,7 +657,7 @@ void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& 
 
 void Simulation::step() {
     if (quasi_static()) return step_quasi_static();
-    const std::size_t n = p_.size();
+    const std::size_t n = owned();
     const double dt = settings_.dt, half = 0.5 * dt;
     const bool semi = semi_implicit();
     ParticleStore& p = p_;
@@ -562,19 +686,27 @@ void Simulation::step() {
     }
     time_ += dt;
     ++step_;
-    // Step 3: neighbor list check (a rebuild may re-sort the particles, forces included).
+    // Step 3: neighbor list check (a rebuild may re-sort the particles, forces included). Under a
+    // decomposition every rank rebuilds when one must; otherwise the ghosts follow their owners.
+    if (halo_) max_disp2 = halo_->all_max(max_disp2);
     if (!std::isfinite(max_disp2)) non_finite_ = true;
     if (non_finite_) check_health();
     if (nl_.needs_rebuild(max_disp2)) force_rebuild_ = true;
+    if (halo_) {
+        clear_ghost_forces();
+        if (!force_rebuild_) halo_->update_ghosts(p_);
+    }
     times_.integrate += omp_get_wtime() - t_start;
     // Step 4: pair forces at the new positions with the half-step velocities.
     pair_forces(wall_contacts, wall_overlap);
     t_start = omp_get_wtime();
-    // Step 5: second half kick; layer top for the end criterion (M-8.2).
+    // Step 5: second half kick; layer top for the end criterion (M-8.2). A rebuild may have
+    // traded particles between ranks: the owned count is the present one.
     double top = -INFINITY;
     bool finite = true;
+    const std::size_t n_now = owned();
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : top) reduction(&& : finite)
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n_now; ++i) {
         if (semi) {
             implicit_acceleration(i);
             p.velocity[i] += half * accel_[i];
@@ -586,6 +718,10 @@ void Simulation::step() {
         top = std::max(top, p.position[i].z + p.radius[i]);
         finite = finite && is_finite(p.velocity[i]) && is_finite(p.omega[i]);
     }
+    if (halo_) {
+        top = halo_->all_max(top);
+        finite = halo_->all_max(finite ? 0.0 : 1.0) == 0.0;
+    }
     stats_.layer_top = top;
     non_finite_ = !finite;
     times_.integrate += omp_get_wtime() - t_start;
@@ -593,31 +729,43 @@ void Simulation::step() {
 }
 
 void Simulation::check_health() {
+    std::string blow_up = non_finite_report();
+    if (halo_) blow_up = halo_->first_message(blow_up);
+    if (!blow_up.empty()) throw RunError(blow_up, "blow_up");
+    if (stats_.max_overlap_rel <= settings_.overlap_limit) return;
+    auto [worst, report] = worst_overlap_report();
+    if (halo_) report = halo_->message_of_max(worst, report);
+    throw RunError(report, "runaway_overlap");
+}
+
+std::string Simulation::non_finite_report() const {
     const ParticleStore& p = p_;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < owned(); ++i) {
         if (!is_finite(p.position[i]) || !is_finite(p.velocity[i]) || !is_finite(p.omega[i]) ||
             !is_finite(p.force[i]))
-            throw RunError(fmt::format("blow-up at step {} (t = {:.6g} s): particle {} (species "
-                                       "{}, r = {:.4g} um) has a "
-                                       "non-finite state: position ({:.4g}, {:.4g}, {:.4g}) um, "
-                                       "velocity ({:.4g}, {:.4g}, "
-                                       "{:.4g}) m/s, force ({:.4g}, {:.4g}, {:.4g}) N. Likely "
-                                       "cause: time step {:.3g} s "
-                                       "too large for the stiffest force (see `drydem check`)",
-                                       step_, time_, p.id[i], int(p.species[i]), p.radius[i] * 1e6,
-                                       p.position[i].x * 1e6, p.position[i].y * 1e6,
-                                       p.position[i].z * 1e6, p.velocity[i].x, p.velocity[i].y,
-                                       p.velocity[i].z, p.force[i].x, p.force[i].y, p.force[i].z,
-                                       settings_.dt),
-                           "blow_up");
+            return fmt::format("blow-up at step {} (t = {:.6g} s): particle {} (species "
+                               "{}, r = {:.4g} um) has a "
+                               "non-finite state: position ({:.4g}, {:.4g}, {:.4g}) um, "
+                               "velocity ({:.4g}, {:.4g}, "
+                               "{:.4g}) m/s, force ({:.4g}, {:.4g}, {:.4g}) N. Likely "
+                               "cause: time step {:.3g} s "
+                               "too large for the stiffest force (see `drydem check`)",
+                               step_, time_, p.id[i], int(p.species[i]), p.radius[i] * 1e6,
+                               p.position[i].x * 1e6, p.position[i].y * 1e6, p.position[i].z * 1e6,
+                               p.velocity[i].x, p.velocity[i].y, p.velocity[i].z, p.force[i].x,
+                               p.force[i].y, p.force[i].z, settings_.dt);
     }
-    if (stats_.max_overlap_rel <= settings_.overlap_limit) return;
-    // Runaway overlap: find the worst pair (or wall contact), name it, and tell a steady load
-    // from a blow-up by how fast it is closing.
+    return {};
+}
+
+// Runaway overlap: the worst pair (or wall contact) of this rank's list, named, with a steady
+// load told from a blow-up by how fast it is closing.
+std::pair<double, std::string> Simulation::worst_overlap_report() const {
+    const ParticleStore& p = p_;
     double worst = 0.0, closing = 0.0, r_min = 0.0;
     std::string what;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        if (substrate_on_ && p.position[i].z < p.radius[i]) {
+        if (substrate_on_ && i < owned() && p.position[i].z < p.radius[i]) {
             const double rel = 1.0 - p.position[i].z / p.radius[i];
             if (rel > worst) {
                 worst = rel;
@@ -642,13 +790,11 @@ void Simulation::check_health() {
             }
         }
     }
-    throw RunError(
-        fmt::format(
-            "runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} of the smaller "
-            "radius (limit {:.3g}). {}",
-            step_, time_, what, worst, settings_.overlap_limit,
-            overlap_cause(closing * settings_.dt / r_min)),
-        "runaway_overlap");
+    if (what.empty()) return {0.0, {}};
+    return {worst, fmt::format("runaway overlap at step {} (t = {:.6g} s): {} overlap by {:.3g} "
+                               "of the smaller radius (limit {:.3g}). {}",
+                               step_, time_, what, worst, settings_.overlap_limit,
+                               overlap_cause(closing * settings_.dt / r_min))};
 }
 
 std::string Simulation::overlap_cause(double closing_per_step) {
@@ -678,15 +824,16 @@ std::string Simulation::overlap_cause(double closing_per_step) {
 
 double Simulation::kinetic_energy() const {
     double e = 0.0;
-    for (std::size_t i = 0; i < p_.size(); ++i)
+    for (std::size_t i = 0; i < owned(); ++i)
         e +=
             0.5 * p_.mass[i] * norm2(p_.velocity[i]) + 0.5 / p_.inv_inertia[i] * norm2(p_.omega[i]);
-    return e;
+    return halo_ ? halo_->all_sum(e) : e;
 }
 
 Vec3 Simulation::momentum() const {
     Vec3 m{};
-    for (std::size_t i = 0; i < p_.size(); ++i) m += p_.mass[i] * p_.velocity[i];
+    for (std::size_t i = 0; i < owned(); ++i) m += p_.mass[i] * p_.velocity[i];
+    if (halo_) m = {halo_->all_sum(m.x), halo_->all_sum(m.y), halo_->all_sum(m.z)};
     return m;
 }
 

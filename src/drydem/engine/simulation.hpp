@@ -8,8 +8,10 @@
 #include "drydem/engine/quasi_static.hpp"
 #include "drydem/forces/force_field.hpp"
 #include "drydem/neighbor/neighbor_list.hpp"
+#include "drydem/parallel/halo.hpp"
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,9 @@ struct EngineSettings {
     double initial_liquid_level = 1.0e30; ///< z_L at t = 0 [m] (far above: no capillary force)
     Integrator integrator = Integrator::explicit_verlet;
     QuasiStaticSettings quasi_static{}; ///< the quasi-static step's accuracy and solver
+    /// MPI ranks of a domain decomposition in x and y (docs/parallel.md): 1 = none, else the
+    /// size of MPI_COMM_WORLD. Explicit and semi-implicit integrators only, without bonds.
+    int ranks = 1;
 };
 
 /// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).
@@ -103,11 +108,14 @@ public:
     template <class L>
     [[nodiscard]] BodyForce body_law_total() const {
         BodyForce sum{};
-        for (std::size_t i = 0; i < p_.size(); ++i) {
+        for (std::size_t i = 0; i < owned(); ++i) {
             auto kept = BodyLaws::state<L>(body_state_[i]);
             L::add_force(body_geometry(i, p_.velocity[i], p_.omega[i], 0.0),
                          law<L>(ff_.body_params(p_.species[i])), kept, 0.0, sum, nullptr);
         }
+        if (halo_)
+            for (Vec3* v : {&sum.force, &sum.torque})
+                *v = {halo_->all_sum(v->x), halo_->all_sum(v->y), halo_->all_sum(v->z)};
         return sum;
     }
     /// What the body laws see of particle i at velocities v, omega (reach: see BodyGeometry).
@@ -126,6 +134,11 @@ public:
     /// The force on i and the torques of bond b at the present state (its history not advanced).
     [[nodiscard]] PairForce bond_force(const Bond& b) const;
 
+    /// The particles this rank owns: the first owned() of the store; the rest are ghosts, copies
+    /// of other ranks' particles (docs/parallel.md). All of them without a decomposition.
+    [[nodiscard]] std::size_t owned() const { return halo_ ? halo_->owned() : p_.size(); }
+    /// The domain decomposition's exchanges, or nullptr without one.
+    [[nodiscard]] const parallel::Halo* halo() const { return halo_ ? &*halo_ : nullptr; }
     [[nodiscard]] const ParticleStore& particles() const { return p_; }
     /// What the body laws keep per particle (storage order): `BodyLaws::state<L>(s[i])`.
     [[nodiscard]] const std::vector<BodyState>& body_states() const { return body_state_; }
@@ -202,6 +215,18 @@ private:
     template <class PairFn, class WallFn>
     void visit_contact_forces(PairFn&& pair, WallFn&& wall) const;
     void rebuild_neighbors();
+    /// Under a decomposition: pair states that change rank, migration, ghosts, then the list.
+    template <class RangeFn, class OwnerRangeFn>
+    void rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range);
+    /// Sets the decomposition up from settings_.ranks (constructor).
+    void decompose();
+    /// Upper bound of the interaction range of the pairs particle i owns (partners are never
+    /// larger than their owner, neighbor_list.hpp).
+    [[nodiscard]] double owner_range_bound(std::size_t i) const;
+    /// Largest radius and largest owner range over all ranks (the ghosts' reach).
+    [[nodiscard]] std::pair<double, double> largest_radius_and_range() const;
+    /// Zeroes what the ghosts accumulate in a force evaluation (their owners have theirs).
+    void clear_ghost_forces();
     /// Particle forces of particle i into the store (M-9.5), counting substrate contacts.
     void body_forces(std::size_t i, std::size_t& wall_contacts, double& wall_overlap);
     /// Pair forces (and the bonds') added to the store; completes the step statistics.
@@ -232,7 +257,13 @@ private:
     /// The largest Δt the solved velocities allow (quasi_static.hpp: displacement, approach).
     [[nodiscard]] double quasi_static_step_limit() const;
     void step_quasi_static();
+    /// Stops the run (RunError, the same on every rank) on a non-finite state or an overlap
+    /// beyond the limit.
     void check_health();
+    /// The first owned particle with a non-finite state, described ("" when none).
+    [[nodiscard]] std::string non_finite_report() const;
+    /// The largest relative overlap of this rank's list and its description.
+    [[nodiscard]] std::pair<double, std::string> worst_overlap_report() const;
     void allocate_integrator();
 
     ParticleStore p_;
@@ -274,6 +305,9 @@ private:
     };
     std::vector<ThreadBuffer> buffer_;
     bool substrate_on_ = false; ///< ForceField::substrate_on, for the wall-contact statistics
+    /// The domain decomposition (settings_.ranks > 1). Mutable: the const estimates trade
+    /// ghost values and count what they sent.
+    mutable std::optional<parallel::Halo> halo_;
 };
 
 /// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below 2.

@@ -57,6 +57,8 @@ struct GuardInputs {
     const BondNetwork& bonds;
     bool semi;
     std::size_t threads;
+    std::size_t owned;    ///< the rows this rank owns; the rest are ghosts (docs/parallel.md)
+    parallel::Halo* halo; ///< the decomposition's exchanges, or nullptr
     [[nodiscard]] RowSplit rows() const { return {p.size(), threads}; }
     [[nodiscard]] std::size_t lo_of(std::size_t t) const { return rows().lo(t); }
 };
@@ -163,30 +165,36 @@ double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
     // estimate must follow from the engine state alone, so that a resumed run is bit-identical.
     x.resize(6 * n);
     for (double& v : x) v = u(rng);
+    // Under a decomposition the sums run over owned rows only, then over the ranks; a ghost's
+    // entries follow its owner's after every update (the products read them).
+    auto all_sum = [&](double v) { return in.halo ? in.halo->all_sum(v) : v; };
+    if (in.halo) in.halo->update_ghost_values(x, 6);
     const SelfBlock none{};
     auto block = [&](std::size_t i) -> const SelfBlock& { return semi ? blocks[i] : none; };
     auto mass_norm2 = [&](std::size_t i) {
         const Vec3 v{x[6 * i], x[6 * i + 1], x[6 * i + 2]};
         const Vec3 w{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]};
+        if (i >= in.owned) return 0.0;
         return p.mass[i] * norm2(v) + norm2(w) / p.inv_inertia[i] + s * quadratic(block(i), v, w);
     };
     double lambda = 0.0;
     int it = 0;
     for (; it < 60; ++it) {
-        const double q = ordered_sum(rows, mass_norm2, partial);
+        const double q = all_sum(ordered_sum(rows, mass_norm2, partial));
         if (!(q > 0.0)) break;
         const double scale = 1.0 / std::sqrt(q);
 #pragma omp parallel for schedule(static) num_threads(int(threads))
         for (std::size_t k = 0; k < 6 * n; ++k) x[k] *= scale;
         apply_split(a, rows, x, y, y_share);
-        const double rayleigh = ordered_sum(
+        const double rayleigh = all_sum(ordered_sum(
             rows,
             [&](std::size_t i) {
                 double r = 0.0;
+                if (i >= in.owned) return r;
                 for (std::size_t k = 6 * i; k < 6 * i + 6; ++k) r += x[k] * y[k];
                 return r;
             },
-            partial);
+            partial));
         const bool converged = it >= 8 && std::abs(rayleigh - lambda) < 1e-3 * rayleigh;
         lambda = rayleigh;
         if (converged) break;
@@ -199,31 +207,43 @@ double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
             x[6 * i] = av.x, x[6 * i + 1] = av.y, x[6 * i + 2] = av.z;
             x[6 * i + 3] = aw.x, x[6 * i + 4] = aw.y, x[6 * i + 5] = aw.z;
         }
+        if (in.halo) in.halo->update_ghost_values(x, 6);
     }
     iterations += it;
     return lambda;
 }
 
-/// Id of the particle where the vector x is largest.
-std::uint32_t peak_particle(const ParticleStore& p, const std::vector<double>& x) {
+/// Id of the particle where the vector x is largest (over the ranks' owned particles).
+std::uint32_t peak_particle(const GuardInputs& in, const std::vector<double>& x) {
     std::size_t best = 0;
     double top = -1.0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = 0; i < in.owned; ++i) {
         double e = 0.0;
         for (int k = 0; k < 6; ++k) e += x[6 * i + k] * x[6 * i + k];
         if (e > top) top = e, best = i;
     }
-    return p.id[best];
+    const std::uint32_t id = in.owned > 0 ? in.p.id[best] : 0;
+    return in.halo ? in.halo->id_of_max(top, id) : id;
 }
 
 } // namespace
 
 Simulation::StabilityEstimate Simulation::stability_estimate() const {
     StabilityEstimate out;
-    if (p_.size() == 0 || nl_.owners() != p_.size()) return out;
+    if (nl_.owners() != p_.size()) return out;
+    if (halo_ ? halo_->all_sum(std::uint64_t(p_.size())) == 0 : p_.size() == 0) return out;
     const bool semi = semi_implicit();
-    const GuardInputs in{
-        p_, nl_, box_, ff_, liquid_level_, plate_height_, bonds_, semi, std::size_t(threads_)};
+    const GuardInputs in{p_,
+                         nl_,
+                         box_,
+                         ff_,
+                         liquid_level_,
+                         plate_height_,
+                         bonds_,
+                         semi,
+                         std::size_t(threads_),
+                         owned(),
+                         halo_ ? &*halo_ : nullptr};
     const GuardOperators op = assemble_operators(in);
     const std::uint64_t step = std::uint64_t(step_);
     if (!semi)
@@ -233,7 +253,7 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
                                        guard_vector_[1], out.iterations);
     out.stiffness_rate = std::sqrt(std::max(omega2, 0.0));
     const bool damping_limits = !semi && out.damping_rate * 2.0 > out.stiffness_rate;
-    out.particle_id = peak_particle(p_, damping_limits ? guard_vector_[0] : guard_vector_[1]);
+    out.particle_id = peak_particle(in, damping_limits ? guard_vector_[0] : guard_vector_[1]);
     return out;
 }
 

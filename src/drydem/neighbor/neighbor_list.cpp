@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/neighbor/neighbor_list.hpp"
 #include "drydem/core/error.hpp"
+#include <algorithm>
 
 namespace drydem {
 
@@ -49,11 +50,39 @@ void NeighborList::sort_by_cell(ParticleStore& p) {
     p.permute(order);
 }
 
+void NeighborList::carry_from(std::vector<Entry> entries) {
+    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+        return a.owner_id != b.owner_id ? a.owner_id < b.owner_id : a.partner_id < b.partner_id;
+    });
+    std::uint32_t max_id = 0;
+    for (const Entry& e : entries) max_id = std::max(max_id, e.owner_id);
+    old_row_of_id_.assign(entries.empty() ? 0 : std::size_t(max_id) + 1, UINT32_MAX);
+    old_offset_.assign(1, 0);
+    old_partner_id_.clear();
+    old_state_.clear();
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        const Entry& e = entries[k];
+        if (k > 0 && e.owner_id == entries[k - 1].owner_id &&
+            e.partner_id == entries[k - 1].partner_id)
+            continue; // the same pair from two ranks: both computed it alike
+        if (old_row_of_id_[e.owner_id] == UINT32_MAX) {
+            old_row_of_id_[e.owner_id] = std::uint32_t(old_offset_.size() - 1);
+            old_offset_.push_back(old_offset_.back());
+        }
+        old_partner_id_.push_back(e.partner_id);
+        old_state_.push_back(e.state);
+        ++old_offset_.back();
+    }
+    if (entries.empty()) old_offset_.clear(); // nothing to carry
+    carry_pending_ = true;
+}
+
 void NeighborList::carry_states(const ParticleStore& p) {
     if (old_offset_.empty()) return;
     const std::size_t n = p.size();
 #pragma omp parallel for schedule(dynamic, 512) num_threads(threads_)
     for (std::size_t i = 0; i < n; ++i) {
+        if (p.id[i] >= old_row_of_id_.size()) continue;
         const std::uint32_t orow = old_row_of_id_[p.id[i]];
         if (orow == UINT32_MAX) continue;
         const std::uint32_t ob = old_offset_[orow], oe = old_offset_[orow + 1];

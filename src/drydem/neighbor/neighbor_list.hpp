@@ -56,21 +56,27 @@ public:
     /// Rebuilds the list. `range(i, j)` returns the pair's interaction range beyond contact [m];
     /// `owner_range(i)` an upper bound of range(i, j) over every j that i can own. When `sort` is
     /// set, particles are first reordered by cell for memory locality. Pair states are carried
-    /// over by particle id.
+    /// over by particle id. Under a domain decomposition (docs/parallel.md) the particles from
+    /// `owned` on are ghosts: a pair of two ghosts is left out (another rank computes it).
     template <class RangeFn, class OwnerRangeFn>
     void build(ParticleStore& p, const Box& box, RangeFn&& range, OwnerRangeFn&& owner_range,
-               bool sort);
+               bool sort, std::size_t owned = SIZE_MAX);
 
     /// After particles left the store: `new_index[i]` is old particle i's new index, UINT32_MAX
     /// for one that left. Its rows and every pair with it go; the rest keep their states.
     void keep_rows(const std::vector<std::uint32_t>& new_index);
 
-    /// Kept pair states keyed by (owner id, partner id), for tests.
+    /// Kept pair states keyed by (owner id, partner id): for tests, and for the pair states that
+    /// travel between ranks.
     struct Entry {
         std::uint32_t owner_id, partner_id;
         PairState state;
     };
     [[nodiscard]] std::vector<Entry> state_entries(const ParticleStore& p) const;
+    /// The next build carries the pair states over from these entries instead of from the
+    /// present list: when particles were traded between ranks, the present list's slots no
+    /// longer name the stored particles. A key given twice keeps the first entry.
+    void carry_from(std::vector<Entry> entries);
 
     /// Everything the next steps depend on (checkpoints): the list itself in its slot order, the
     /// pair states and the positions of the last build (which decide the next rebuild). The cell
@@ -117,23 +123,28 @@ private:
     // Previous list, keyed by ids, for carrying pair states over.
     std::vector<std::uint32_t> old_offset_, old_partner_id_, old_row_of_id_;
     std::vector<PairState> old_state_;
+    bool carry_pending_ = false; ///< carry_from() filled the old list for the next build
     std::vector<std::uint32_t> order_;
 };
 
 template <class RangeFn, class OwnerRangeFn>
 void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
-                         OwnerRangeFn&& owner_range, bool sort) {
+                         OwnerRangeFn&& owner_range, bool sort, std::size_t owned) {
     const std::size_t n = p.size();
-    // Keep the previous list, keyed by ids, to carry pair states over.
-    old_offset_.swap(offset_);
-    old_state_.swap(state_);
-    old_partner_id_.resize(partner_.size());
-    for (std::size_t s = 0; s < partner_.size(); ++s) old_partner_id_[s] = p.id[partner_[s]];
-    std::uint32_t max_id = 0;
-    for (std::size_t i = 0; i < n; ++i) max_id = std::max(max_id, p.id[i]);
-    old_row_of_id_.assign(std::size_t(max_id) + 1, UINT32_MAX);
-    if (!old_offset_.empty())
-        for (std::size_t i = 0; i < n; ++i) old_row_of_id_[p.id[i]] = std::uint32_t(i);
+    if (carry_pending_) {
+        carry_pending_ = false; // carry_from() has set the old list up
+    } else {
+        // Keep the previous list, keyed by ids, to carry pair states over.
+        old_offset_.swap(offset_);
+        old_state_.swap(state_);
+        old_partner_id_.resize(partner_.size());
+        for (std::size_t s = 0; s < partner_.size(); ++s) old_partner_id_[s] = p.id[partner_[s]];
+        std::uint32_t max_id = 0;
+        for (std::size_t i = 0; i < n; ++i) max_id = std::max(max_id, p.id[i]);
+        old_row_of_id_.assign(std::size_t(max_id) + 1, UINT32_MAX);
+        if (!old_offset_.empty())
+            for (std::size_t i = 0; i < n; ++i) old_row_of_id_[p.id[i]] = std::uint32_t(i);
+    }
 
     // Search radius of each owner: its own reach to partners no larger than itself.
     double cell = 0.0;
@@ -175,6 +186,7 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
                     for (std::uint32_t k = g.cell_start[cc]; k < g.cell_start[cc + 1]; ++k) {
                         const std::uint32_t j = g.cell_items[k];
                         if (!owns(ri, idi, p.radius[j], p.id[j])) continue;
+                        if (i >= owned && j >= owned) continue; // two ghosts
                         const Vec3 d = box.minimum_image(xi, p.position[j]);
                         const double reach = ri + p.radius[j] + range(i, j);
                         if (norm2(d) < (reach + skin_) * (reach + skin_)) on_pair(j, reach * reach);
