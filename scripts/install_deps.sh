@@ -10,10 +10,11 @@ packages=(
   python3-scipy python3-sklearn   # drydem calibrate: qmc start, Gaussian-process surrogate
   slurm-wlm munge                 # --scheduler slurm; the test starts its own one-node cluster
   libhypre-dev                    # BoomerAMG for the transport solves (pulls Open MPI)
+  libopenmpi-dev openmpi-bin      # MPI domain decomposition (docs/parallel.md), mpirun for ctest
   clang-format-14                 # the format check (ctest format; .clang-format)
 )
 # The peer benchmark (bench/peer_bench.sh) also needs LIGGGHTS and LAMMPS: pass --peers.
-if [[ "${1:-}" == "--peers" ]]; then packages+=(liggghts lammps openmpi-bin); fi
+if [[ "${1:-}" == "--peers" ]]; then packages+=(liggghts lammps); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
