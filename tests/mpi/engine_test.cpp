@@ -14,6 +14,7 @@
 #include "drydem/setup/formulation.hpp"
 #include "drydem/setup/insertion.hpp"
 #include <gtest/gtest.h>
+#include "thin_film_case.hpp"
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -23,22 +24,8 @@ using namespace drydem;
 
 namespace {
 
-struct Case {
-    Config c;
-    FilmRecipe recipe;
-    ScaledParameters scaled;
-    LiquidLevelSchedule schedule;
-};
-
-Case thin_film() {
-    Config c = load_config("", "t",
-                           {"film.box_x=36um", "film.box_y=36um", "film.areal_loading=2.5mg/cm^2",
-                            "formulation.ncm_diameters=[\"3 um\"]"});
-    FilmRecipe r = make_recipe(c);
-    ScaledParameters s = scale_parameters(c);
-    LiquidLevelSchedule l{r.wet_film_height, s.level_speeds_scaled, s.zone_duration_scaled};
-    return {c, r, s, l};
-}
+using test::Case;
+using test::thin_film;
 
 Simulation make(const Case& k, Integrator integrator, int ranks) {
     EngineSettings es;
