@@ -35,6 +35,7 @@
 #include "drydem/drying/film_setup.hpp"
 #include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/run_observer.hpp"
+#include "drydem/drying/run_summary.hpp"
 #include "drydem/drying/stability_guard.hpp"
 #include "drydem/engine/fire.hpp"
 #include "drydem/git_hash.hpp"
@@ -115,6 +116,11 @@ private:
     /// After a relaxation: the pass measured; true when another pass is to follow.
     [[nodiscard]] bool another_pass();
     void start_pass();
+    /// A pass's load begins: its steps and wall time count from here.
+    void mark_pass_start() {
+        pass_first_step_ = steps();
+        pass_wall_start_ = Clock::now();
+    }
     void record();
     void watch_top();
     /// The relaxation's end: the settling's force tolerance reached, or the top standing still.
@@ -185,6 +191,8 @@ private:
     const Config& c_;
     const CalenderOptions& o_;
     const Clock::time_point start_ = Clock::now();
+    Clock::time_point pass_wall_start_ = start_; ///< the present pass's load began
+    std::int64_t pass_first_step_ = 0;
     StatusLine status_;
     std::shared_ptr<spdlog::logger> log_;
     Film film_;
@@ -430,6 +438,7 @@ void CalenderRun::next_phase() {
     }
     phase_ = Phase(int(phase_) + 1);
     phase_start_ = now();
+    if (phase_ == Phase::load) mark_pass_start();
     log_->info("{} from t = {:.4g} us: plate at {:.4g} um, {:.4g} MPa", phase_name(phase_),
                now() * 1e6, std::min(sim_->plate_height(), 1.0) * 1e6, pressure_ * 1e-6);
 }
@@ -439,7 +448,8 @@ void CalenderRun::next_phase() {
 bool CalenderRun::another_pass() {
     const double top = film_top();
     passes_.push_back({peak_target_, porosity_at(peak_plate_), pass_peak_pressure_,
-                       porosity_at(top), top, at_rest()});
+                       porosity_at(top), top, at_rest(), steps() - pass_first_step_,
+                       std::chrono::duration<double>(Clock::now() - pass_wall_start_).count()});
     const CalenderPass& last = passes_.back();
     log_->info("pass {}: pressed to porosity {:.4f} ({:.4g} MPa), unloaded {:.4f}", passes_.size(),
                last.peak_porosity, last.peak_pressure * 1e-6, last.unloaded_porosity);
@@ -489,6 +499,7 @@ void CalenderRun::start_pass() {
     pass_peak_pressure_ = 0.0;
     phase_ = Phase::load;
     phase_start_ = now();
+    mark_pass_start();
     log_->info("pass {}: load from t = {:.4g} us to porosity {:.4f}", passes_.size() + 1,
                now() * 1e6, peak_target_);
 }
@@ -804,7 +815,9 @@ json CalenderRun::summary() const {
                           {"peak_pressure_MPa", q.peak_pressure * 1e-6},
                           {"unloaded_porosity", q.unloaded_porosity},
                           {"unloaded_thickness_um", q.unloaded_thickness * 1e6},
-                          {"at_rest", q.at_rest}});
+                          {"at_rest", q.at_rest},
+                          {"steps", q.steps},
+                          {"wall_time_s", q.wall_time}});
     s["passes"] = passes;
     if (c_.calender_mode == "unloaded_porosity")
         s["target"] = {{"unloaded_porosity", c_.calender_target_porosity},
@@ -843,6 +856,10 @@ json CalenderRun::summary() const {
     s["steps"] = r_.steps;
     s["time_simulated_s"] = now();
     s["wall_time_s"] = r_.wall_time;
+    // The rest of the wall time: settling and relaxation (FIRE), agglomerate compaction and
+    // extrusion, the rows (stress tensor), the structure analysis.
+    s["wall_time_phases_s"] = wall_time_phases(*sim_, guard_);
+    s["neighbor_builds"] = sim_->neighbors().builds();
     s["particle_steps_per_s"] =
         double(r_.steps) * double(sim_->particles().size()) / std::max(r_.wall_time, 1e-9);
     s["threads"] = sim_->threads();

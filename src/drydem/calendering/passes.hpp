@@ -17,6 +17,7 @@
 // first rule lands above the target and the passes close in from above.
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace drydem {
@@ -28,6 +29,8 @@ struct CalenderPass {
     double unloaded_porosity = 0.0;  ///< after unloading and relaxation
     double unloaded_thickness = 0.0; ///< [m]
     bool at_rest = false;            ///< the relaxation reached rest
+    std::int64_t steps = 0;          ///< engine steps from the load's start to the relaxed end
+    double wall_time = 0.0;          ///< wall seconds of the same (the cost of one pass)
 };
 
 /// The peak porosity for the pass after `done` (not empty) that aims at the unloaded `target`.

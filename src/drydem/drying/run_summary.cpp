@@ -14,6 +14,14 @@
 #include <cstdlib>
 
 namespace drydem {
+
+nlohmann::json wall_time_phases(const Simulation& sim, const StabilityGuard& guard) {
+    const PhaseTimes& pt = sim.phase_times();
+    return {{"pair", pt.pair},
+            {"neighbor", pt.neighbor},
+            {"integrate", pt.integrate},
+            {"guard", guard.wall_time()}};
+}
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -132,11 +140,7 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
     }
     const std::int64_t steps = e.result.steps;
     s["time_step_mean_s"] = steps > 0 ? sim.time() / double(steps) : 0.0;
-    const PhaseTimes& pt = sim.phase_times();
-    s["wall_time_phases_s"] = {{"pair", pt.pair},
-                               {"neighbor", pt.neighbor},
-                               {"integrate", pt.integrate},
-                               {"guard", e.guard.wall_time()}};
+    s["wall_time_phases_s"] = wall_time_phases(sim, e.guard);
     s["neighbor_builds"] = sim.neighbors().builds();
     s["steps"] = steps;
     s["seed"] = c.seed;

@@ -8,6 +8,10 @@
 
 namespace drydem {
 
+/// Where an engine's wall time went (summary.json `wall_time_phases_s`): pair forces (bonds
+/// included), neighbour-list rebuilds, integration, and the stability guard's estimates.
+nlohmann::json wall_time_phases(const Simulation& sim, const StabilityGuard& guard);
+
 /// Appends, in this order: final particles, structure analysis, summary, plots.
 void append_end_outputs(const RunContext& ctx, std::vector<std::unique_ptr<RunObserver>>& list);
 
