@@ -186,6 +186,8 @@ private:
     void finish();
     [[nodiscard]] json summary() const;
     [[nodiscard]] json bonds_summary() const;
+    /// summary.json `passes`: per pass the peak aimed at and reached, the unloaded state, the cost.
+    [[nodiscard]] json passes_summary() const;
     void analyse(json& s) const;
 
     const Config& c_;
@@ -808,17 +810,7 @@ json CalenderRun::summary() const {
         {"inner_porosity_end", cb_inner_porosity()},
         {"densest_sphere_height_um", densest_sphere_height() * 1e6},
         {"porosity_at_densest_sphere_height", porosity_at(densest_sphere_height())}};
-    json passes = json::array();
-    for (const CalenderPass& q : passes_)
-        passes.push_back({{"peak_target_porosity", q.peak_target},
-                          {"peak_porosity", q.peak_porosity},
-                          {"peak_pressure_MPa", q.peak_pressure * 1e-6},
-                          {"unloaded_porosity", q.unloaded_porosity},
-                          {"unloaded_thickness_um", q.unloaded_thickness * 1e6},
-                          {"at_rest", q.at_rest},
-                          {"steps", q.steps},
-                          {"wall_time_s", q.wall_time}});
-    s["passes"] = passes;
+    s["passes"] = passes_summary();
     if (c_.calender_mode == "unloaded_porosity")
         s["target"] = {{"unloaded_porosity", c_.calender_target_porosity},
                        {"tolerance", c_.calender_porosity_tolerance},
@@ -866,6 +858,20 @@ json CalenderRun::summary() const {
     s["version"] = DRYDEM_VERSION;
     s["git"] = DRYDEM_GIT_HASH;
     return s;
+}
+
+json CalenderRun::passes_summary() const {
+    json passes = json::array();
+    for (const CalenderPass& q : passes_)
+        passes.push_back({{"peak_target_porosity", q.peak_target},
+                          {"peak_porosity", q.peak_porosity},
+                          {"peak_pressure_MPa", q.peak_pressure * 1e-6},
+                          {"unloaded_porosity", q.unloaded_porosity},
+                          {"unloaded_thickness_um", q.unloaded_thickness * 1e6},
+                          {"at_rest", q.at_rest},
+                          {"steps", q.steps},
+                          {"wall_time_s", q.wall_time}});
+    return passes;
 }
 
 json CalenderRun::bonds_summary() const {

@@ -69,8 +69,8 @@ Decomposition decompose(const Box& box, int ranks, double reach) {
         if (!fits_x || !fits_y) continue;
         // Ghost area per rank: its rectangle grown by `reach` across each cut face, less itself.
         const double w = box.lx / px, h = box.ly / py;
-        const double cut = (w + (px > 1 ? 2.0 * reach : 0.0)) * (h + (py > 1 ? 2.0 * reach : 0.0)) -
-                           w * h;
+        const double cut =
+            (w + (px > 1 ? 2.0 * reach : 0.0)) * (h + (py > 1 ? 2.0 * reach : 0.0)) - w * h;
         if (cut < best_cut) {
             best_cut = cut;
             best = {box, px, py};
