@@ -111,6 +111,14 @@ TEST(Halo, MigrationKeepsEveryParticleOnceWithWhatTravelsWithIt) {
     if (world().size > 1) {
         EXPECT_GT(halo.counters().migrated, 0u);
     }
+    // Gathered, the film is whole again on every rank, ordered by id, as last moved.
+    const ParticleStore all = halo.gather(p);
+    ASSERT_EQ(all.size(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+        EXPECT_EQ(all.id[k], k);
+        EXPECT_EQ(all.position[k].z, whole.position[k].z);
+        EXPECT_EQ(all.radius[k], whole.radius[k]);
+    }
 }
 
 TEST(Halo, GhostsAreExactlyTheNeighboursParticlesWithinReach) {

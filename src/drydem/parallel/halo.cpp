@@ -144,6 +144,29 @@ void Halo::update_ghost_values(std::vector<double>& v, std::size_t per_particle)
             std::memcpy(v.data() + ghost_begin_[k] * per_particle, got[k].data(), got[k].size());
 }
 
+ParticleStore Halo::gather(const ParticleStore& p) const {
+    std::vector<ParticleRecord> mine(owned_);
+    for (std::size_t i = 0; i < owned_; ++i) mine[i] = record_of(p, i);
+    const int bytes = int(owned_ * sizeof(ParticleRecord));
+    std::vector<int> counts(std::size_t(d_.ranks())), offsets(std::size_t(d_.ranks()));
+    MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
+    long total = 0;
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+        offsets[r] = int(total);
+        total += counts[r];
+    }
+    if (total > long(INT_MAX))
+        throw RunError("parallel::Halo::gather: the film exceeds one MPI message (2 GB)");
+    std::vector<ParticleRecord> all(std::size_t(total) / sizeof(ParticleRecord));
+    MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(),
+                   MPI_BYTE, comm_);
+    std::sort(all.begin(), all.end(),
+              [](const ParticleRecord& a, const ParticleRecord& b) { return a.id < b.id; });
+    ParticleStore out;
+    for (const ParticleRecord& r : all) append_record(out, r);
+    return out;
+}
+
 double Halo::all_max(double v) const {
     double out = v;
     MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, comm_);

@@ -97,6 +97,10 @@ public:
     template <class T>
     std::vector<std::vector<T>> exchange_items(const std::vector<std::vector<T>>& items);
 
+    /// Every rank's owned particles, on every rank, ordered by id: what the outputs, the
+    /// analysis and a checkpoint read of a decomposed film.
+    [[nodiscard]] ParticleStore gather(const ParticleStore& p) const;
+
     // Reductions over all ranks of the decomposition (every rank gets the result).
     [[nodiscard]] double all_max(double v) const;
     [[nodiscard]] double all_sum(double v) const;
