@@ -4,8 +4,10 @@ per run, as mean and seed-to-seed standard deviation per integrator, and whether
 of the means sits inside the seed spread; plus a plot of the thickness vs process time (paper
 Fig. 5) and the CB profile, overlaid.
 
-usage: compare_integrators.py OUT_PREFIX RUN_DIR... (each run's config.toml names its integrator;
-runs with a run.time_step cap form their own group, compared with the explicit reference)
+usage: compare_integrators.py [--by-ranks] OUT_PREFIX RUN_DIR... (each run's config.toml names its
+integrator; runs with a run.time_step cap form their own group, compared with the explicit
+reference). --by-ranks groups the runs by their MPI rank count instead (summary.json `ranks`),
+compared with the one-rank runs (docs/parallel.md).
 writes OUT_PREFIX.md (table) and OUT_PREFIX.png
 """
 import csv, json, os, statistics, sys
@@ -41,11 +43,14 @@ QUANTITIES = [
 ]
 
 
-def load(run):
+def load(run, by_ranks=False):
     with open(os.path.join(run, "config.toml"), "rb") as f:
         cfg = tomllib.load(f)
     s = json.load(open(os.path.join(run, "summary.json")))
     a = json.load(open(os.path.join(run, "analysis", "analysis.json")))
+    if by_ranks:
+        ranks = s.get("ranks", 1)
+        return f"{ranks} rank" + ("s" if ranks > 1 else ""), s, a
     integ = cfg.get("numerics", {}).get("integrator", "semi_implicit")
     cap = cfg.get("run", {}).get("time_step", 0)
     if isinstance(cap, str) or cap:  # a scheme at another step cap is its own group
@@ -54,14 +59,20 @@ def load(run):
 
 
 def main():
-    prefix, runs = sys.argv[1], sys.argv[2:]
+    args = sys.argv[1:]
+    by_ranks = "--by-ranks" in args
+    args = [x for x in args if x != "--by-ranks"]
+    prefix, runs = args[0], args[1:]
     groups = {}
     for run in runs:
-        integ, s, a = load(run)
+        integ, s, a = load(run, by_ranks)
         groups.setdefault(integ, []).append((run, s, a))
-    # The explicit reference first; every other group is compared with it, the seed spread
-    # (the larger of the two groups' standard deviations) as the yardstick.
-    names = sorted(groups, key=lambda n: (not n.startswith("explicit"), n))
+    # The reference first (the explicit integrator, or one rank); every other group is compared
+    # with it, the seed spread (the larger of the two groups' standard deviations) as the yardstick.
+    if by_ranks:
+        names = sorted(groups, key=lambda n: int(n.split()[0]))
+    else:
+        names = sorted(groups, key=lambda n: (not n.startswith("explicit"), n))
     ref = names[0]
     others = names[1:]
     head = "| quantity | " + " | ".join(f"{n} (n={len(groups[n])}) mean ± s.d." for n in names)

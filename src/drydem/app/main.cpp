@@ -445,6 +445,25 @@ int dryer_command(CommandLine& a) {
     return app::run_dryer(c, d);
 }
 
+/// Runs `f` on rank 0 only when several MPI ranks run (on the one rank otherwise); an error there
+/// is thrown on every rank as an InputError with its words.
+template <class F>
+void agree_on_rank0(F&& f) {
+    const parallel::World w = parallel::world();
+    if (w.size == 1) {
+        f();
+        return;
+    }
+    std::string failed;
+    if (w.rank == 0) try {
+            f();
+        } catch (const std::exception& e) {
+            failed = e.what();
+        }
+    failed = parallel::broadcast(failed);
+    if (!failed.empty()) throw InputError(failed);
+}
+
 int run_command(CommandLine& a) {
     if (!a.resume_dir.empty()) {
         if (!a.config_file.empty() || !a.sets.empty() || !a.particles.empty() ||
@@ -469,14 +488,22 @@ int run_command(CommandLine& a) {
                                          : a.out_dir;
     o.resume = !a.resume_dir.empty();
     // Never two runs in one folder, never a new run over an old one's files (old frames would
-    // mix with the new); a resumed run continues its own folder as it is.
-    const OutputLock lock(o.output_dir);
-    if (!o.resume) prepare_output_folder(o.output_dir, run_output(), a.overwrite);
+    // mix with the new); a resumed run continues its own folder as it is. Several ranks: rank 0
+    // holds the folder, and its refusal stops them all.
+    std::optional<OutputLock> lock;
+    agree_on_rank0([&] {
+        lock.emplace(o.output_dir);
+        if (!o.resume) prepare_output_folder(o.output_dir, run_output(), a.overwrite);
+    });
     if (!a.particles.empty()) o.particles_file = a.particles;
     o.quiet = a.quiet;
     o.plots = !a.no_plots;
     o.stop_after_steps = a.stop_after;
-    if (a.couple_dryer) return app::run_coupled(c, o);
+    if (a.couple_dryer) {
+        if (parallel::world().size > 1)
+            throw InputError("--couple-dryer runs on one MPI rank only (docs/parallel.md)");
+        return app::run_coupled(c, o);
+    }
     // dryer.schedule = "model": the liquid level follows the dryer model's rates (D-6 step 2).
     if (c.dryer_schedule == "model") c = dryer::with_model_schedule(c);
     const DryingResult r = run_drying(c, o);
@@ -485,20 +512,58 @@ int run_command(CommandLine& a) {
 
 } // namespace
 
-/// A simulating command started as one of several MPI ranks would run the same film on each into
-/// one folder: the engine does not step a decomposed film yet (docs/parallel.md).
+/// Only `drydem run` spreads its film over several MPI ranks; the other simulating commands would
+/// run the same film on each rank into one folder (docs/parallel.md).
 void refuse_several_ranks(const CommandLine& a) {
     const int ranks = parallel::launcher_ranks();
     if (ranks <= 1) return;
-    for (const CLI::App* command :
-         {a.run, a.calender, a.analyze, a.bench, a.study, a.calibrate, a.pool})
+    for (const CLI::App* command : {a.calender, a.analyze, a.bench, a.study, a.calibrate, a.pool})
         if (*command)
             throw InputError(fmt::format(
-                "drydem {}: started as one of {} MPI ranks, but this build steps a film on one "
-                "rank only (the drying run does not use the domain decomposition yet: "
-                "docs/parallel.md). Start it without mpirun/srun, or with one rank; --threads "
-                "uses the cores of one machine",
+                "drydem {}: started as one of {} MPI ranks, but only `drydem run` uses several "
+                "ranks (docs/parallel.md). Start it without mpirun/srun, or with one rank; "
+                "--threads uses the cores of one machine",
                 command->get_name(), ranks));
+    if (*a.run) {
+        parallel::start_mpi();
+        if (parallel::world().size != ranks)
+            throw InputError(fmt::format("the launcher announced {} MPI ranks, MPI runs {}", ranks,
+                                         parallel::world().size));
+    }
+}
+
+/// The command line's command.
+int dispatch(CommandLine& a) {
+    check_integers(a);
+    if (*a.config) {
+        if (a.which == "doc")
+            std::cout << config_reference_markdown();
+        else
+            std::cout << default_config_toml();
+        return 0;
+    }
+    refuse_several_ranks(a);
+    if (*a.bench) return app::run_bench(a.bench_opt);
+    if (*a.analyze) return analyze_command(a);
+    if (*a.calender) {
+        a.calender_opt.plots = !a.no_plots;
+        std::signal(SIGINT, [](int sig) { request_stop(sig); });
+        std::signal(SIGTERM, [](int sig) { request_stop(sig); });
+        return app::run_calender(a.calender_opt);
+    }
+    if (*a.check) return check_command(a);
+    if (*a.calibrate) return calibrate_command(a);
+    if (*a.study) return study_command(a);
+    if (*a.pool) {
+        a.pool_opt.plots = !a.no_plots;
+        return run_pool_command(app::self_executable(), a.pool_tasks, a.pool_opt, a.quiet);
+    }
+    if (*a.dryer) return dryer_command(a);
+    if (!*a.run) {
+        std::cout << a.cli.help();
+        return 0;
+    }
+    return run_command(a);
 }
 
 int main(int argc, char** argv) {
@@ -517,42 +582,20 @@ int main(int argc, char** argv) {
         const int code = a.cli.exit(e);
         return code == 0 ? 0 : 2;
     }
+    int code = 0;
     try {
-        check_integers(a);
-        if (*a.config) {
-            if (a.which == "doc")
-                std::cout << config_reference_markdown();
-            else
-                std::cout << default_config_toml();
-            return 0;
-        }
-        refuse_several_ranks(a);
-        if (*a.bench) return app::run_bench(a.bench_opt);
-        if (*a.analyze) return analyze_command(a);
-        if (*a.calender) {
-            a.calender_opt.plots = !a.no_plots;
-            std::signal(SIGINT, [](int sig) { request_stop(sig); });
-            std::signal(SIGTERM, [](int sig) { request_stop(sig); });
-            return app::run_calender(a.calender_opt);
-        }
-        if (*a.check) return check_command(a);
-        if (*a.calibrate) return calibrate_command(a);
-        if (*a.study) return study_command(a);
-        if (*a.pool) {
-            a.pool_opt.plots = !a.no_plots;
-            return run_pool_command(app::self_executable(), a.pool_tasks, a.pool_opt, a.quiet);
-        }
-        if (*a.dryer) return dryer_command(a);
-        if (!*a.run) {
-            std::cout << a.cli.help();
-            return 0;
-        }
-        return run_command(a);
+        code = dispatch(a);
     } catch (const InputError& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 2;
+        // Bad input is found alike on every rank: rank 0 says it.
+        if (parallel::world().rank == 0) std::cerr << "error: " << e.what() << "\n";
+        code = 2;
     } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return 1;
+        const parallel::World w = parallel::world();
+        std::cerr << (w.size > 1 ? fmt::format("error: rank {}: ", w.rank) : "error: ") << e.what()
+                  << "\n";
+        if (w.size > 1) parallel::abort_all(1); // the other ranks may wait for this one
+        code = 1;
     }
+    parallel::finish_mpi();
+    return code;
 }

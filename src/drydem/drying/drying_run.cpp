@@ -18,11 +18,13 @@
 #include "drydem/drying/run_observer.hpp"
 #include "drydem/git_hash.hpp"
 #include "drydem/io/particle_io.hpp"
+#include "drydem/parallel/mpi_world.hpp"
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <spdlog/logger.h>
 #include <exception>
 #include <fstream>
+#include <iostream>
 #include <unistd.h>
 
 namespace drydem {
@@ -35,6 +37,7 @@ class DryingRun {
 public:
     DryingRun(const Config& c, const RunOptions& opt);
     DryingResult dry();
+    [[nodiscard]] bool decomposed() const { return whole_.decomposed(); }
 
 private:
     [[nodiscard]] std::shared_ptr<spdlog::logger> open_folder();
@@ -46,8 +49,10 @@ private:
     [[noreturn]] void stop(const StepView& at) const;
     [[nodiscard]] int stop_reason() const;
     [[nodiscard]] StepView view(bool timeout, int stop) const {
-        return {sim_, end_, guard_, timeout, stop, RunClock::now()};
+        return {sim_, whole_, end_, guard_, timeout, stop, RunClock::now()};
     }
+    template <class Call>
+    void on_outputs(Call&& call);
     [[nodiscard]] double wall_total() const {
         return wall_before_ +
                std::chrono::duration<double>(RunClock::now() - session_start_).count();
@@ -57,11 +62,13 @@ private:
     const Config& c_;
     const RunOptions& opt_;
     const RunClock::time_point session_start_ = RunClock::now();
+    const parallel::World world_ = parallel::world(); ///< rank 0 writes the outputs
     std::optional<RunCheckpoint> resumed_;
     StatusLine status_;
     std::shared_ptr<spdlog::logger> log_;
     Film film_;
     Simulation sim_;
+    WholeFilm whole_;
     StabilityGuard guard_;
     EndCriterion end_;
     const double t_max_; ///< run.max_process_time [s, simulated]
@@ -76,21 +83,24 @@ DryingRun::DryingRun(const Config& c, const RunOptions& opt)
       resumed_(opt.resume ? std::optional<RunCheckpoint>(read_run_checkpoint(opt.output_dir))
                           : std::nullopt),
       status_(!opt.quiet && isatty(STDERR_FILENO)), log_(open_folder()), film_(describe_film(c)),
-      sim_(make_simulation()),
+      sim_(make_simulation()), whole_(sim_),
       guard_(guard_policy_of(c.stability_guard), largest_time_step(c, film_.scaled), *log_),
       end_(c.final_gap > 0.0 ? c.final_gap : film_.recipe.largest_diameter(),
            film_.scaled.sim_time(c.relaxation)),
       t_max_(film_.scaled.sim_time(c.max_process_time)), ctx_{c,     opt,     film_,
                                                               *log_, status_, session_start_},
-      outputs_(make_run_outputs(ctx_, [this](StateFields& f) { visit_state(f); })) {
+      outputs_(whole_.root() ? make_run_outputs(ctx_, [this](StateFields& f) { visit_state(f); })
+                             : std::vector<std::unique_ptr<RunObserver>>{}) {
     if (resumed_) {
         visit_state(resumed_->progress);
-        resumed_->progress.check_all_loaded();
+        if (whole_.root()) resumed_->progress.check_all_loaded(); // the outputs are the root's
     }
 }
 
-/// The output folder: snapshots/, checkpoint/, log.txt, and config.toml of a fresh run.
+/// The output folder: snapshots/, checkpoint/, log.txt, and config.toml of a fresh run. The
+/// other ranks of a decomposed run write nothing: their logger is silent.
 std::shared_ptr<spdlog::logger> DryingRun::open_folder() {
+    if (world_.rank != 0) return silent_logger();
     std::filesystem::create_directories(opt_.output_dir / "snapshots");
     std::filesystem::create_directories(opt_.output_dir / "checkpoint");
     auto log = make_run_logger(opt_.output_dir, opt_.quiet, opt_.resume, status_);
@@ -102,8 +112,8 @@ std::shared_ptr<spdlog::logger> DryingRun::open_folder() {
 Simulation DryingRun::make_simulation() {
     ParticleStore particles;
     if (!resumed_) {
-        particles = wet_film_particles(c_, opt_, film_, *log_);
-        write_particles_csv(opt_.output_dir / "initial.csv", particles);
+        particles = wet_film_particles(c_, opt_, film_, *log_); // the same on every rank
+        if (world_.rank == 0) write_particles_csv(opt_.output_dir / "initial.csv", particles);
     }
     count_species(film_, resumed_ ? resumed_->engine.particles : particles);
     log_->info("DryDEM {} ({}) run '{}': {} NCM + {} CB particles, box {:.4g} x {:.4g} um, H_wet = "
@@ -118,6 +128,7 @@ Simulation DryingRun::make_simulation() {
     es.threads = c_.threads;
     es.sort_every = c_.sort_every;
     es.overlap_limit = c_.overlap_limit;
+    es.ranks = world_.size;
     // The level is known before the first force evaluation: forces (and contact histories) are
     // computed once at t = 0.
     es.initial_liquid_level = film_.schedule.level(0.0);
@@ -175,7 +186,24 @@ void DryingRun::start() {
                    estimate / 86400.0, sim_.threads(), plan.steps * plan.particles,
                    plan.particle_steps_per_core);
     const StepView at = view(false, 0);
-    for (auto& o : outputs_) o->open(at, resumed_.has_value());
+    on_outputs([&](RunObserver& o) { o.open(at, resumed_.has_value()); });
+}
+
+/// Calls every output (the root's) while the other ranks answer its requests for the film; an
+/// output that fails stops every rank with its message.
+template <class Call>
+void DryingRun::on_outputs(Call&& call) {
+    if (!whole_.root()) {
+        whole_.serve();
+        return;
+    }
+    try {
+        for (auto& o : outputs_) call(*o);
+    } catch (const std::exception& e) {
+        whole_.fail(e.what());
+        throw;
+    }
+    whole_.release();
 }
 
 void DryingRun::step() {
@@ -183,7 +211,7 @@ void DryingRun::step() {
     report(end_.update(sim_.time(), sim_.liquid_level(), sim_.stats().layer_top));
     guard_.after_step(sim_);
     const StepView now = view(sim_.time() >= t_max_, stop_reason());
-    for (auto& o : outputs_) o->after_step(now);
+    on_outputs([&](RunObserver& o) { o.after_step(now); });
     if (!end_.done() && (now.stop != 0 || now.timeout)) stop(now);
 }
 
@@ -199,9 +227,11 @@ void DryingRun::report(EndCriterion::Event event) const {
                c_.relaxation);
 }
 
-/// Ctrl-C, SIGTERM (a batch system's time limit), or --stop-after-steps (for testing).
+/// Ctrl-C, SIGTERM (a batch system's time limit), or --stop-after-steps (for testing). A signal
+/// reaches the ranks of a launch at different steps: they stop at the first step any has it.
 int DryingRun::stop_reason() const {
-    if (const int sig = stop_requested()) return sig;
+    const int sig = whole_.decomposed() ? parallel::all_max(stop_requested()) : stop_requested();
+    if (sig) return sig;
     if (opt_.stop_after_steps && sim_.step_count() >= *opt_.stop_after_steps)
         return kStopAfterSteps;
     return 0;
@@ -243,16 +273,16 @@ void DryingRun::finish(DryingResult& r) {
         r.porosity = d.porosity;
     }
     nlohmann::json summary;
-    const RunEnd at{sim_, end_, guard_, r, summary};
+    const RunEnd at{sim_, whole_, end_, guard_, r, summary};
     std::exception_ptr required_failed;
-    for (auto& o : outputs_) {
+    on_outputs([&](RunObserver& o) {
         try {
-            o->finish(at);
+            o.finish(at);
         } catch (const std::exception& e) {
-            log_->error("could not write the {}: {}", o->name(), e.what());
-            if (o->required()) required_failed = std::current_exception();
+            log_->error("could not write the {}: {}", o.name(), e.what());
+            if (o.required()) required_failed = std::current_exception();
         }
-    }
+    });
     log_->flush();
     if (required_failed) std::rethrow_exception(required_failed);
 }
@@ -285,6 +315,17 @@ Config resume_config(const std::filesystem::path& output_dir) {
     return c;
 }
 
-DryingResult run_drying(const Config& c, const RunOptions& opt) { return DryingRun(c, opt).dry(); }
+DryingResult run_drying(const Config& c, const RunOptions& opt) {
+    DryingRun run(c, opt);
+    if (!run.decomposed()) return run.dry();
+    // A failure on one rank that the others cannot learn of (an output's I/O, memory) would leave
+    // them waiting in an exchange: it ends the launch.
+    try {
+        return run.dry();
+    } catch (const std::exception& e) {
+        std::cerr << fmt::format("error: rank {}: {}\n", parallel::world().rank, e.what());
+        parallel::abort_all(dynamic_cast<const InputError*>(&e) ? 2 : 1);
+    }
+}
 
 } // namespace drydem

@@ -4,6 +4,7 @@
 #include "drydem/drying/run_observer.hpp"
 #include <spdlog/sinks/base_sink.h>
 #include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/null_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <cstdio>
@@ -55,6 +56,11 @@ std::shared_ptr<spdlog::logger> make_run_logger(const std::filesystem::path& dir
     log->set_level(spdlog::level::debug);
     log->flush_on(spdlog::level::info);
     return log;
+}
+
+std::shared_ptr<spdlog::logger> silent_logger() {
+    return std::make_shared<spdlog::logger>("drydem",
+                                            std::make_shared<spdlog::sinks::null_sink_mt>());
 }
 
 } // namespace drydem

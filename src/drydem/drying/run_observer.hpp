@@ -12,6 +12,7 @@
 #include "drydem/drying/run_state.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/drying/stability_guard.hpp"
+#include "drydem/drying/whole_film.hpp"
 #include "drydem/engine/simulation.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <nlohmann/json.hpp>
@@ -60,6 +61,9 @@ private:
 std::shared_ptr<spdlog::logger> make_run_logger(const std::filesystem::path& dir, bool quiet,
                                                 bool append, StatusLine& status);
 
+/// A logger that writes nothing: the other ranks of a decomposed run (rank 0 writes).
+std::shared_ptr<spdlog::logger> silent_logger();
+
 /// What every part of the run sees, fixed for the run.
 struct RunContext {
     const Config& config;
@@ -72,7 +76,8 @@ struct RunContext {
 
 /// The run after one step, as the outputs see it.
 struct StepView {
-    const Simulation& sim;
+    const Simulation& sim;  ///< time, level, reduced statistics (the same on every rank)
+    const WholeFilm& whole; ///< the particles of the whole film
     const EndCriterion& end;
     const StabilityGuard& guard;
     bool timeout = false; ///< run.max_process_time reached without an end
@@ -85,6 +90,7 @@ struct StepView {
 /// The run at its end (completed or not).
 struct RunEnd {
     const Simulation& sim;
+    const WholeFilm& whole;
     const EndCriterion& end;
     const StabilityGuard& guard;
     const DryingResult& result;

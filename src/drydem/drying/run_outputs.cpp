@@ -126,10 +126,10 @@ private:
         const auto& st = sim.stats();
         const Film& film = ctx_.film;
         const int zone = film.schedule.zone(sim.time());
-        const LevelLoad load = level_load(sim.particles(), sim.forces(), sim.liquid_level(),
+        const LevelLoad load = level_load(s.whole.particles(), sim.forces(), sim.liquid_level(),
                                           film.schedule.speeds[std::size_t(zone)], film.box.area());
-        const double p99 = analysis::overlap_census(
-                               as_structure(sim.particles(), sim.box(), film.recipe.cb_species()))
+        const double p99 = analysis::overlap_census(as_structure(s.whole.particles(), sim.box(),
+                                                                 film.recipe.cb_species()))
                                .all.p99;
         const double values[] = {
             ctx_.film.scaled.process_time(sim.time()),
@@ -137,12 +137,12 @@ private:
             double(sim.step_count()),
             sim.liquid_level() * 1e6,
             st.layer_top * 1e6,
-            top_percentile(sim.particles(), 0.99) * 1e6,
-            sim.kinetic_energy(),
+            top_percentile(s.whole.particles(), 0.99) * 1e6,
+            s.whole.kinetic_energy(),
             double(st.contacts),
             double(st.wall_contacts),
             st.max_overlap_rel,
-            double(particles_cutting_level(sim.particles(), sim.liquid_level())),
+            double(particles_cutting_level(s.whole.particles(), sim.liquid_level())),
             s.guard.indicator(),
             sim.settings().dt,
             double(zone + 1),
@@ -196,16 +196,16 @@ public:
     explicit SnapshotObserver(const RunContext& ctx) : trigger_(snapshot_trigger(ctx)) {}
     void after_step(const StepView& s) override {
         if (!trigger_.due(s.sim.time())) return;
-        frame(s.sim);
+        frame(s.sim, s.whole);
         trigger_.advance();
     }
-    void finish(const RunEnd& e) override { frame(e.sim); }
+    void finish(const RunEnd& e) override { frame(e.sim, e.whole); }
 
 protected:
-    virtual void frame(const Simulation& sim) = 0;
+    virtual void frame(const Simulation& sim, const WholeFilm& whole) = 0;
     /// The first frame of a fresh run, at t = 0.
-    void first_frame(const Simulation& sim) {
-        frame(sim);
+    void first_frame(const StepView& s) {
+        frame(s.sim, s.whole);
         trigger_.next = trigger_.every;
     }
     Every trigger_;
@@ -226,7 +226,7 @@ public:
             }
             return;
         }
-        first_frame(s.sim);
+        first_frame(s);
     }
     void fields(StateFields& f) override {
         f("frames.next", trigger_.next);
@@ -234,11 +234,11 @@ public:
     }
 
 private:
-    void frame(const Simulation& sim) override {
+    void frame(const Simulation& sim, const WholeFilm& whole) override {
         const int k = count_++;
         const double tp = ctx_.film.scaled.process_time(sim.time());
         const std::string name = fmt::format("frame_{:05d}.vtp", k);
-        write_vtp(dir_ / name, sim.particles(), sim.time(), tp, sim.coordination());
+        write_vtp(dir_ / name, whole.particles(), sim.time(), tp, whole.coordination());
         particles_pvd_.add(tp, name);
         const std::string level_name = fmt::format("level_{:05d}.vtp", k);
         write_level_vtp(dir_ / level_name, ctx_.film.box, sim.liquid_level(), tp);
@@ -262,7 +262,7 @@ public:
         if (resumed) truncate_file(file_, bytes_);
         os_.open(file_, resumed ? std::ios::app : std::ios::trunc);
         if (resumed) return;
-        first_frame(s.sim);
+        first_frame(s);
     }
     void fields(StateFields& f) override {
         if (!f.loading()) {
@@ -274,9 +274,9 @@ public:
     }
 
 private:
-    void frame(const Simulation& sim) override {
+    void frame(const Simulation& sim, const WholeFilm& whole) override {
         if (!os_.is_open()) os_.open(file_, std::ios::trunc); // a run that failed before open()
-        append_lammps_dump(os_, sim.particles(), ctx_.film.box, sim.step_count(),
+        append_lammps_dump(os_, whole.particles(), ctx_.film.box, sim.step_count(),
                            sim.stats().layer_top);
         os_.flush();
     }
@@ -297,25 +297,26 @@ public:
     void open(const StepView& s, bool resumed) override {
         // A first checkpoint at once: a run killed before the first checkpoint_every (10 min by
         // default) can still be resumed.
-        if (!resumed && ctx_.config.checkpoint_every > 0) write(s.sim);
+        if (!resumed && ctx_.config.checkpoint_every > 0) write(s);
     }
     void after_step(const StepView& s) override {
         if (s.end.done()) return;
         if (s.stop) {
-            write(s.sim);
+            write(s);
             return;
         }
         if (s.timeout || ctx_.config.checkpoint_every <= 0) return;
         if (std::chrono::duration<double>(s.now - last_).count() >= ctx_.config.checkpoint_every) {
             last_ = s.now;
-            write(s.sim);
+            write(s);
         }
     }
 
 private:
-    void write(const Simulation& sim) {
+    void write(const StepView& s) {
+        const Simulation& sim = s.sim;
         write_run_checkpoint(ctx_.options.output_dir, to_toml(ctx_.config), visit_state_,
-                             sim.state());
+                             s.whole.state());
         ctx_.log.debug("checkpoint at step {} (process time {:.4f} s)", sim.step_count(),
                        ctx_.film.scaled.process_time(sim.time()));
     }
@@ -350,7 +351,7 @@ public:
             "contacts {:>7}  {:.3g} particle-steps/s  ETA {:.0f} s",
             sim.step_count(), ctx_.film.scaled.process_time(t), t * 1e6, sim.liquid_level() * 1e6,
             sim.stats().layer_top * 1e6, sim.stats().contacts,
-            double(sim.particles().size()) * double(sim.step_count() - first_step_) / elapsed, eta);
+            double(s.whole.size()) * double(sim.step_count() - first_step_) / elapsed, eta);
         if (ctx_.status.tty()) {
             ctx_.log.debug("{}", line); // log.txt only
             ctx_.status.show(line);

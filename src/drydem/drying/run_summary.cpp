@@ -32,7 +32,7 @@ public:
     explicit FinalParticles(const RunContext& ctx) : ctx_(ctx) {}
     const char* name() const override { return "final particles"; }
     void finish(const RunEnd& e) override {
-        write_particles_csv(ctx_.options.output_dir / "final.csv", e.sim.particles());
+        write_particles_csv(ctx_.options.output_dir / "final.csv", e.whole.particles());
     }
 
 private:
@@ -98,7 +98,7 @@ void add_results(const RunContext& ctx, const RunEnd& e, json& s) {
     s["name"] = ctx.config.name;
     s["final_thickness_um"] = if_found(found, r.final_thickness * 1e6);
     s["final_thickness_relaxed_um"] = if_found(r.completed, r.relaxed_thickness * 1e6);
-    s["film_top_p99_um"] = top_percentile(e.sim.particles(), 0.99) * 1e6;
+    s["film_top_p99_um"] = top_percentile(e.whole.particles(), 0.99) * 1e6;
     s["density_g_cm3"] = if_found(found, r.density * 1e-3);
     s["porosity"] = if_found(found, r.porosity);
     s["areal_loading_mg_cm2"] = film.areal_mass * 100.0;
@@ -110,6 +110,20 @@ void add_results(const RunContext& ctx, const RunEnd& e, json& s) {
     s["final_gap_um"] = e.end.final_gap() * 1e6;
     s["particles"] = {{"ncm", film.n_ncm}, {"cb", film.n_cb}};
     s["box_um"] = {ctx.config.box_x * 1e6, ctx.config.box_y * 1e6};
+}
+
+/// A decomposed run: its grid and rank 0's share and traffic (docs/parallel.md "Scaling").
+void add_decomposition(const parallel::Halo& h, const Simulation& sim, json& s) {
+    const parallel::HaloCounters& n = h.counters();
+    s["ranks"] = h.decomposition().ranks();
+    s["mpi"] = {{"grid", {h.decomposition().px, h.decomposition().py}},
+                {"rank0_owned", sim.owned()},
+                {"rank0_ghosts", sim.particles().size() - sim.owned()},
+                {"rank0_messages", n.messages},
+                {"rank0_bytes", n.bytes},
+                {"rank0_exchange_s", n.seconds},
+                {"rank0_migrated", n.migrated},
+                {"rank0_exchanges", n.exchanges}};
 }
 
 /// The summary's record of how the run was made: scaling, level, integration, cost, build.
@@ -146,10 +160,12 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
     s["seed"] = c.seed;
     s["resumed"] = ctx.options.resume;
     s["threads"] = sim.threads();
+    s["ranks"] = 1;
+    if (const parallel::Halo* h = sim.halo()) add_decomposition(*h, sim, s);
     s["version"] = fmt::format("{} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH);
     s["wall_time_s"] = e.result.wall_time;
     s["particle_steps_per_s"] =
-        double(sim.particles().size()) * double(steps) / std::max(e.result.wall_time, 1e-9);
+        double(e.whole.size()) * double(steps) / std::max(e.result.wall_time, 1e-9);
     s["config"] = "config.toml";
 }
 

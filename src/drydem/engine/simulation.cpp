@@ -34,15 +34,11 @@ Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSett
       force_rebuild_(state.force_rebuild), stats_(state.stats),
       rebuilds_since_sort_(state.rebuilds_since_sort) {
     settings_.dt = state.dt;
-    if (settings_.ranks > 1)
-        throw InputError("resuming a checkpoint on several MPI ranks is not there yet "
-                         "(docs/parallel.md)");
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     substrate_on_ = ff_.substrate_on();
     if (body_state_.size() != p_.size())
         throw InputError("checkpoint: the body laws' states do not fit the particles");
     nl_.restore(std::move(state.neighbors));
-    allocate_integrator();
     if (semi_implicit()) {
         if (state.accel.size() != p_.size() || state.alpha.size() != p_.size())
             throw InputError("checkpoint: the state holds no semi-implicit accelerations (it was "
@@ -50,6 +46,19 @@ Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSett
                              "numerics.integrator");
         accel_ = std::move(state.accel);
         alpha_ = std::move(state.alpha);
+    }
+    if (settings_.ranks > 1) {
+        // Every rank holds the whole state: keep what this rank owns, carry the pair states by
+        // ids into the first step's rebuild.
+        resumed_entries_ = nl_.state_entries(p_);
+        decompose();
+        force_rebuild_ = true;
+    }
+    std::vector<Vec3> accel = std::move(accel_), alpha = std::move(alpha_);
+    allocate_integrator();
+    if (semi_implicit()) {
+        accel_ = std::move(accel);
+        alpha_ = std::move(alpha);
     }
 }
 
@@ -97,7 +106,10 @@ void Simulation::decompose() {
     }
     const double reach = 2.0 * r_max + range_max + settings_.skin;
     halo_.emplace(parallel::decompose(box_, w.size, reach), MPI_COMM_WORLD);
-    halo_->keep_owned(p_, body_state_);
+    if (!accel_.empty())
+        halo_->keep_owned(p_, body_state_, accel_, alpha_); // a resumed semi-implicit state
+    else
+        halo_->keep_owned(p_, body_state_);
 }
 
 std::pair<double, double> Simulation::largest_radius_and_range() const {
@@ -256,11 +268,101 @@ void Simulation::remove_particles(const std::vector<std::size_t>& which) {
 }
 
 EngineState Simulation::state() const {
-    if (halo_)
-        throw RunError("a checkpoint of a film on several MPI ranks is not there yet "
-                       "(docs/parallel.md)");
+    if (halo_) return gathered_state();
     return {p_,           body_state_, nl_.state(), step_,  time_,          liquid_level_,
             settings_.dt, stats_,      accel_,      alpha_, force_rebuild_, rebuilds_since_sort_};
+}
+
+ParticleStore Simulation::whole_particles() const { return halo_ ? halo_->gather(p_) : p_; }
+
+namespace {
+/// What a decomposed state gathers per owned particle besides its record.
+struct KeptRow {
+    std::uint32_t id;
+    std::int32_t coordination;
+    BodyState body;
+    Vec3 accel, alpha, x_build;
+};
+/// One slot of a rank's neighbour list, keyed by ids.
+struct ListSlot {
+    std::uint32_t owner_id, partner_id;
+    double reach2;
+    PairState state;
+};
+/// Rows ordered by id, for a store ordered by id.
+std::vector<KeptRow> by_id(std::vector<KeptRow> rows) {
+    std::sort(rows.begin(), rows.end(),
+              [](const KeptRow& a, const KeptRow& b) { return a.id < b.id; });
+    return rows;
+}
+} // namespace
+
+std::vector<std::int32_t> Simulation::whole_coordination() const {
+    std::vector<std::int32_t> z = coordination();
+    if (!halo_) return z;
+    std::vector<KeptRow> mine(owned());
+    for (std::size_t i = 0; i < mine.size(); ++i) mine[i] = {p_.id[i], z[i], {}, {}, {}, {}};
+    const std::vector<KeptRow> all = by_id(halo_->gather_items(mine));
+    z.resize(all.size());
+    for (std::size_t k = 0; k < all.size(); ++k) z[k] = all[k].coordination;
+    return z;
+}
+
+// Each pair sits in the row of one particle on every rank that holds it (the larger one, ties by
+// id): the rows of owned particles hold every pair once over the ranks.
+EngineState Simulation::gathered_state() const {
+    const parallel::Halo& halo = *halo_;
+    const NeighborList::State list = nl_.state();
+    std::vector<KeptRow> mine(owned());
+    std::vector<ListSlot> slots;
+    for (std::size_t i = 0; i < mine.size(); ++i) {
+        mine[i] = {p_.id[i],
+                   0,
+                   body_state_[i],
+                   semi_implicit() ? accel_[i] : Vec3{},
+                   semi_implicit() ? alpha_[i] : Vec3{},
+                   i < list.x_build.size() ? list.x_build[i] : p_.position[i]};
+        if (i + 1 < list.offset.size())
+            for (std::uint32_t s = list.offset[i]; s < list.offset[i + 1]; ++s)
+                slots.push_back(
+                    {p_.id[i], p_.id[list.partner[s]], list.reach2[s], list.pair_state[s]});
+    }
+    EngineState st;
+    st.particles = halo.gather(p_);
+    const std::vector<KeptRow> rows = by_id(halo.gather_items(mine));
+    std::vector<ListSlot> all = halo.gather_items(slots);
+    std::sort(all.begin(), all.end(), [](const ListSlot& a, const ListSlot& b) {
+        return a.owner_id != b.owner_id ? a.owner_id < b.owner_id : a.partner_id < b.partner_id;
+    });
+    const std::size_t n = rows.size();
+    std::unordered_map<std::uint32_t, std::uint32_t> index;
+    for (std::size_t k = 0; k < n; ++k) {
+        index.emplace(rows[k].id, std::uint32_t(k));
+        st.body_state.push_back(rows[k].body);
+        st.neighbors.x_build.push_back(rows[k].x_build);
+        if (semi_implicit()) {
+            st.accel.push_back(rows[k].accel);
+            st.alpha.push_back(rows[k].alpha);
+        }
+    }
+    NeighborList::State& nl = st.neighbors;
+    nl.builds = nl_.builds();
+    nl.offset.assign(n + 1, 0);
+    for (const ListSlot& e : all) ++nl.offset[index.at(e.owner_id) + 1];
+    for (std::size_t k = 0; k < n; ++k) nl.offset[k + 1] += nl.offset[k];
+    for (const ListSlot& e : all) { // sorted by owner id: the rows fill in order
+        nl.partner.push_back(index.at(e.partner_id));
+        nl.reach2.push_back(e.reach2);
+        nl.pair_state.push_back(e.state);
+    }
+    st.step = step_;
+    st.time = time_;
+    st.liquid_level = liquid_level_;
+    st.dt = settings_.dt;
+    st.stats = stats_;
+    st.force_rebuild = true; // the list is over the id order, not a build's
+    st.rebuilds_since_sort = rebuilds_since_sort_;
+    return st;
 }
 
 // Under a decomposition (docs/parallel.md): the pair states of this rank's list, keyed by ids,
@@ -274,7 +376,11 @@ void Simulation::rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range)
     const parallel::Decomposition& d = halo.decomposition();
     const std::size_t own = halo.owned();
     std::vector<NeighborList::Entry> entries;
-    if (nl_.owners() == p_.size()) entries = nl_.state_entries(p_);
+    if (nl_.owners() == p_.size())
+        entries = nl_.state_entries(p_);
+    else // the first rebuild of a resumed state: the whole film's list, read from the checkpoint
+        entries = std::move(resumed_entries_);
+    resumed_entries_.clear();
     const std::vector<int>& nb = halo.neighbors();
     std::unordered_map<std::uint32_t, std::size_t> leaving; // id -> neighbour slot
     for (std::size_t i = 0; i < own; ++i) {

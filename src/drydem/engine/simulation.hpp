@@ -79,8 +79,20 @@ public:
     Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings);
     /// Continues from a checkpointed state; computes nothing (the state carries its forces).
     /// settings.dt is replaced by the state's Δt.
+    /// On several ranks (settings.ranks > 1) every rank is given the whole state and keeps what
+    /// it owns; the pair states are carried over by ids at the first step's rebuild.
     Simulation(EngineState state, Box box, ForceField forces, EngineSettings settings);
+    /// On one rank, the engine's own state. On several (a collective: every rank calls it), the
+    /// whole film's, on every rank: particles ordered by id, the neighbour list as the union of
+    /// the ranks' lists over that order, and a rebuild due at the next step, so it continues on
+    /// any rank count (round-off apart: the summation order changes).
     [[nodiscard]] EngineState state() const;
+    /// Every particle of the film, ordered by id on several ranks (a collective), in storage
+    /// order on one.
+    [[nodiscard]] ParticleStore whole_particles() const;
+    /// coordination() of every particle, in whole_particles() order (a collective on several
+    /// ranks).
+    [[nodiscard]] std::vector<std::int32_t> whole_coordination() const;
 
     /// One velocity-Verlet step with rotation (M-9.1). Throws RunError on a blow-up (non-finite
     /// state or runaway overlap), naming the particle(s) and the cause; the state is then the one
@@ -220,6 +232,8 @@ private:
     void rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range);
     /// Sets the decomposition up from settings_.ranks (constructor).
     void decompose();
+    /// state() on several ranks.
+    [[nodiscard]] EngineState gathered_state() const;
     /// Upper bound of the interaction range of the pairs particle i owns (partners are never
     /// larger than their owner, neighbor_list.hpp).
     [[nodiscard]] double owner_range_bound(std::size_t i) const;
@@ -308,6 +322,9 @@ private:
     /// The domain decomposition (settings_.ranks > 1). Mutable: the const estimates trade
     /// ghost values and count what they sent.
     mutable std::optional<parallel::Halo> halo_;
+    /// A state resumed on several ranks: the pair states of the whole film's list, keyed by ids,
+    /// for the first rebuild to carry over.
+    std::vector<NeighborList::Entry> resumed_entries_;
 };
 
 /// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below 2.

@@ -147,7 +147,18 @@ void Halo::update_ghost_values(std::vector<double>& v, std::size_t per_particle)
 ParticleStore Halo::gather(const ParticleStore& p) const {
     std::vector<ParticleRecord> mine(owned_);
     for (std::size_t i = 0; i < owned_; ++i) mine[i] = record_of(p, i);
-    const int bytes = int(owned_ * sizeof(ParticleRecord));
+    std::vector<ParticleRecord> all = gather_items(mine);
+    std::sort(all.begin(), all.end(),
+              [](const ParticleRecord& a, const ParticleRecord& b) { return a.id < b.id; });
+    ParticleStore out;
+    for (const ParticleRecord& r : all) append_record(out, r);
+    return out;
+}
+
+Halo::Bytes Halo::gather_bytes(const std::byte* mine, std::size_t size) const {
+    if (size > std::size_t(INT_MAX))
+        throw RunError("parallel::Halo: one rank's share exceeds one MPI message (2 GB)");
+    const int bytes = int(size);
     std::vector<int> counts(std::size_t(d_.ranks())), offsets(std::size_t(d_.ranks()));
     MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
     long total = 0;
@@ -156,15 +167,11 @@ ParticleStore Halo::gather(const ParticleStore& p) const {
         total += counts[r];
     }
     if (total > long(INT_MAX))
-        throw RunError("parallel::Halo::gather: the film exceeds one MPI message (2 GB)");
-    std::vector<ParticleRecord> all(std::size_t(total) / sizeof(ParticleRecord));
-    MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(),
-                   MPI_BYTE, comm_);
-    std::sort(all.begin(), all.end(),
-              [](const ParticleRecord& a, const ParticleRecord& b) { return a.id < b.id; });
-    ParticleStore out;
-    for (const ParticleRecord& r : all) append_record(out, r);
-    return out;
+        throw RunError("parallel::Halo: the gathered film exceeds one MPI message (2 GB)");
+    Bytes all(static_cast<std::size_t>(total));
+    MPI_Allgatherv(mine, bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
+                   comm_);
+    return all;
 }
 
 double Halo::all_max(double v) const {

@@ -100,6 +100,9 @@ public:
     /// Every rank's owned particles, on every rank, ordered by id: what the outputs, the
     /// analysis and a checkpoint read of a decomposed film.
     [[nodiscard]] ParticleStore gather(const ParticleStore& p) const;
+    /// Every rank's `mine`, on every rank, concatenated in rank order (trivially copyable items).
+    template <class T>
+    [[nodiscard]] std::vector<T> gather_items(const std::vector<T>& mine) const;
 
     // Reductions over all ranks of the decomposition (every rank gets the result).
     [[nodiscard]] double all_max(double v) const;
@@ -119,6 +122,8 @@ private:
     /// `expected` (bytes per neighbour) when both sides know the sizes, else they are traded.
     std::vector<Bytes> exchange(const std::vector<Bytes>& send,
                                 const std::vector<std::size_t>* expected = nullptr);
+    /// Every rank's bytes, on every rank, in rank order.
+    [[nodiscard]] Bytes gather_bytes(const std::byte* mine, std::size_t size) const;
     /// The index of `rank` in neighbors(), or -1.
     [[nodiscard]] int slot_of(int rank) const;
     [[noreturn]] void throw_not_neighbour(const ParticleStore& p, std::size_t i, int owner) const;
@@ -250,6 +255,16 @@ void Halo::migrate(ParticleStore& p, std::vector<T>&... extra) {
     ghost_send_.assign(neighbours_.size(), {});
     ghost_begin_.assign(neighbours_.size(), owned_);
     ghost_count_.assign(neighbours_.size(), 0);
+}
+
+template <class T>
+std::vector<T> Halo::gather_items(const std::vector<T>& mine) const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const Bytes all =
+        gather_bytes(reinterpret_cast<const std::byte*>(mine.data()), mine.size() * sizeof(T));
+    std::vector<T> out(all.size() / sizeof(T));
+    if (!out.empty()) std::memcpy(out.data(), all.data(), out.size() * sizeof(T));
+    return out;
 }
 
 } // namespace drydem::parallel

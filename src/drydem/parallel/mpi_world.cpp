@@ -2,6 +2,7 @@
 #include "drydem/parallel/mpi_world.hpp"
 #include "drydem/core/error.hpp"
 #include <mpi.h>
+#include <cstdint>
 #include <cstdlib>
 #include <mutex>
 #include <string>
@@ -72,6 +73,33 @@ World world() {
     MPI_Comm_rank(MPI_COMM_WORLD, &w.rank);
     MPI_Comm_size(MPI_COMM_WORLD, &w.size);
     return w;
+}
+
+int broadcast(int value) {
+    MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return value;
+}
+
+std::string broadcast(const std::string& text) {
+    std::uint64_t length = text.size();
+    MPI_Bcast(&length, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    std::string out = world().rank == 0 ? text : std::string(length, ' ');
+    if (length > 0) MPI_Bcast(out.data(), int(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+    return out;
+}
+
+int all_max(int value) {
+    int out = value;
+    MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return out;
+}
+
+void abort_all(int code) {
+    int initialised = 0, finalised = 0;
+    MPI_Initialized(&initialised);
+    MPI_Finalized(&finalised);
+    if (initialised && !finalised) MPI_Abort(MPI_COMM_WORLD, code);
+    std::_Exit(code);
 }
 
 } // namespace drydem::parallel

@@ -3,6 +3,7 @@
 // decomposition of a run launched as several ranks (mpirun, srun), and hypre's conduction solves,
 // which need MPI even in a one-process run (a singleton on MPI_COMM_SELF).
 #pragma once
+#include <string>
 
 namespace drydem::parallel {
 
@@ -29,5 +30,19 @@ struct World {
 };
 /// This process's rank and the rank count of MPI_COMM_WORLD ({0, 1} while MPI is not started).
 World world();
+
+// What the ranks of one run agree on over MPI_COMM_WORLD (the run's root is rank 0). Each is a
+// collective: every rank must call it, in the same order.
+
+/// Rank 0's value, on every rank.
+[[nodiscard]] int broadcast(int value);
+/// Rank 0's text, on every rank.
+[[nodiscard]] std::string broadcast(const std::string& text);
+/// The largest value over the ranks.
+[[nodiscard]] int all_max(int value);
+
+/// Ends every rank of the launch at once (MPI_Abort): for a failure on one rank that the others
+/// cannot learn of, so that no rank waits forever in an exchange. Without MPI it exits.
+[[noreturn]] void abort_all(int code);
 
 } // namespace drydem::parallel

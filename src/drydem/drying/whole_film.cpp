@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#include "drydem/drying/whole_film.hpp"
+#include "drydem/core/error.hpp"
+#include "drydem/parallel/mpi_world.hpp"
+
+namespace drydem {
+
+WholeFilm::WholeFilm(const Simulation& sim) : sim_(sim) {
+    decomposed_ = sim.halo() != nullptr;
+    root_ = !decomposed_ || sim.halo()->rank() == 0;
+    size_ = decomposed_ ? std::size_t(sim.halo()->all_sum(std::uint64_t(sim.owned())))
+                        : sim.particles().size();
+}
+
+void WholeFilm::ask(Request r) const {
+    if (decomposed_) (void)parallel::broadcast(int(r));
+}
+
+const ParticleStore& WholeFilm::particles() const {
+    if (!decomposed_) return sim_.particles();
+    if (particles_step_ != sim_.step_count()) {
+        ask(kParticles);
+        particles_ = sim_.whole_particles();
+        particles_step_ = sim_.step_count();
+    }
+    return particles_;
+}
+
+const std::vector<std::int32_t>& WholeFilm::coordination() const {
+    if (coordination_step_ != sim_.step_count()) {
+        ask(kCoordination);
+        coordination_ = sim_.whole_coordination();
+        coordination_step_ = sim_.step_count();
+    }
+    return coordination_;
+}
+
+double WholeFilm::kinetic_energy() const {
+    ask(kKineticEnergy);
+    return sim_.kinetic_energy();
+}
+
+EngineState WholeFilm::state() const {
+    ask(kState);
+    return sim_.state();
+}
+
+void WholeFilm::release() const { ask(kRelease); }
+
+void WholeFilm::fail(const std::string& why) const {
+    if (!decomposed_) return;
+    ask(kFail);
+    (void)parallel::broadcast(why);
+}
+
+void WholeFilm::serve() const {
+    for (;;) {
+        switch (parallel::broadcast(0)) {
+        case kRelease:
+            return;
+        case kParticles:
+            (void)sim_.whole_particles();
+            break;
+        case kCoordination:
+            (void)sim_.whole_coordination();
+            break;
+        case kState:
+            (void)sim_.state();
+            break;
+        case kKineticEnergy:
+            (void)sim_.kinetic_energy();
+            break;
+        case kFail:
+            throw RunError(parallel::broadcast(std::string()), "output_failed");
+        default:
+            throw RunError("the ranks of this run lost step (unknown request from rank 0)");
+        }
+    }
+}
+
+} // namespace drydem
