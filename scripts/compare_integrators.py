@@ -37,6 +37,8 @@ QUANTITIES = [
     ("pore-size median [um]", lambda s, a: a.get("psd_median_um")),
     ("mercury-intrusion median [um]", lambda s, a: a.get("mercury_median_um")),
     ("pore chord mean z [um]", lambda s, a: a["pore_chord_mean_um"]["z"]),
+    ("p99 overlap CB-CB / r", lambda s, a: a["overlap"]["cb_cb"]["p99"]),
+    ("p99 overlap NCM-CB / r", lambda s, a: a["overlap"]["ncm_cb"]["p99"]),
     ("wall time [s]", lambda s, a: s["wall_time_s"]),
     ("steps", lambda s, a: s["steps"]),
     ("mean time step [s]", lambda s, a: s.get("time_step_mean_s")),

@@ -5,7 +5,9 @@
 // lubrication, capillary front, van der Waals, substrate), the skin is small so that lists are
 // rebuilt and particles change rank every few steps. The two runs sum forces in different orders,
 // so they agree to round-off growth, not bit for bit.
+#include "drydem/analysis/overlap_census.hpp"
 #include "drydem/drying/derived_checks.hpp"
+#include "drydem/drying/film_measures.hpp"
 #include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/liquid_level.hpp"
 #include "drydem/drying/scaling.hpp"
@@ -229,4 +231,23 @@ TEST(DecomposedEngine, GatheredStateResumesOnAnyRankCount) {
         EXPECT_LT(worst_position(alone, whole), 1e-9) << "resumed on one rank";
         EXPECT_EQ(again.step_count(), 600);
     }
+}
+
+// The time series' overlap percentile on several ranks (each rank's own pairs, gathered) is the
+// census's of the whole film (a pair search over the gathered particles), the same pairs counted
+// once.
+TEST(DecomposedEngine, GatheredOverlapsAreTheCensus) {
+    const Case k = thin_film();
+    Simulation many = make(k, Integrator::semi_implicit, parallel::world().size);
+    many.run(600);
+    std::vector<double> rel = many.halo() ? many.halo()->gather_items(many.relative_overlaps())
+                                          : many.relative_overlaps();
+    const ParticleStore whole = many.whole_particles();
+    const analysis::OverlapCensus census =
+        analysis::overlap_census(as_structure(whole, many.box(), k.recipe.cb_species()));
+    ASSERT_GT(census.all.pairs, 50u);
+    EXPECT_EQ(rel.size(), census.all.pairs);
+    const analysis::OverlapStats gathered = analysis::summarise(rel);
+    EXPECT_NEAR(gathered.p99, census.all.p99, 1e-12);
+    EXPECT_NEAR(gathered.max, census.all.max, 1e-12);
 }

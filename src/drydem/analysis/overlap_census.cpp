@@ -7,9 +7,7 @@
 #include <numbers>
 
 namespace drydem::analysis {
-namespace {
 
-/// Mean, median, p99 (nearest rank) and max of the overlaps of one type; sorts `rel`.
 OverlapStats summarise(std::vector<double>& rel, double lens) {
     OverlapStats o;
     o.pairs = rel.size();
@@ -28,8 +26,6 @@ OverlapStats summarise(std::vector<double>& rel, double lens) {
     o.max = rel.back();
     return o;
 }
-
-} // namespace
 
 double sphere_lens_volume(double a, double b, double d) {
     if (d >= a + b) return 0.0;

@@ -38,4 +38,8 @@ struct OverlapCensus {
 
 [[nodiscard]] OverlapCensus overlap_census(const Structure& s);
 
+/// Mean, median, p99 (nearest rank) and max of relative overlaps `rel` (sorted in place), with
+/// their lens volume: one OverlapStats.
+[[nodiscard]] OverlapStats summarise(std::vector<double>& rel, double lens_volume = 0.0);
+
 } // namespace drydem::analysis

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/whole_film.hpp"
+#include "drydem/analysis/overlap_census.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/parallel/mpi_world.hpp"
+#include <cstdio>
 
 namespace drydem {
 
@@ -40,6 +42,12 @@ double WholeFilm::kinetic_energy() const {
     return sim_.kinetic_energy();
 }
 
+double WholeFilm::overlap_p99() const {
+    ask(kOverlaps);
+    std::vector<double> all = sim_.halo()->gather_items(sim_.relative_overlaps());
+    return analysis::summarise(all).p99;
+}
+
 EngineState WholeFilm::state() const {
     ask(kState);
     return sim_.state();
@@ -55,7 +63,8 @@ void WholeFilm::fail(const std::string& why) const {
 
 void WholeFilm::serve() const {
     for (;;) {
-        switch (parallel::broadcast(0)) {
+        const int request = parallel::broadcast(0);
+        switch (request) {
         case kRelease:
             return;
         case kParticles:
@@ -70,10 +79,15 @@ void WholeFilm::serve() const {
         case kKineticEnergy:
             (void)sim_.kinetic_energy();
             break;
+        case kOverlaps:
+            (void)sim_.halo()->gather_items(sim_.relative_overlaps());
+            break;
         case kFail:
             throw RunError(parallel::broadcast(std::string()), "output_failed");
-        default:
-            throw RunError("the ranks of this run lost step (unknown request from rank 0)");
+        default: // a request this rank cannot answer: rank 0 waits in it, so end the launch
+            std::fprintf(stderr, "error: rank %d: unknown request %d from rank 0\n",
+                         sim_.halo()->rank(), request);
+            parallel::abort_all(1);
         }
     }
 }

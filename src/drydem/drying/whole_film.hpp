@@ -28,6 +28,9 @@ public:
     [[nodiscard]] const std::vector<std::int32_t>& coordination() const;
     /// The film's kinetic energy [J] (a sum over the ranks).
     [[nodiscard]] double kinetic_energy() const;
+    /// Several ranks: the 99th percentile of the relative overlaps (Simulation::relative_overlaps)
+    /// of the whole film, gathered, not searched.
+    [[nodiscard]] double overlap_p99() const;
     /// The engine state for a checkpoint (Simulation::state).
     [[nodiscard]] EngineState state() const;
     /// The film's particle count.
@@ -48,7 +51,8 @@ private:
         kCoordination = 2,
         kState = 3,
         kFail = 4,
-        kKineticEnergy = 5
+        kKineticEnergy = 5,
+        kOverlaps = 6
     };
     void ask(Request r) const;
 

@@ -236,6 +236,22 @@ std::vector<Simulation::ContactOverlap> Simulation::contact_overlaps() const {
     return out;
 }
 
+std::vector<double> Simulation::relative_overlaps() const {
+    std::vector<double> out;
+    for (std::size_t i = 0; i < owned(); ++i) {
+        const double r = p_.radius[i], z = p_.position[i].z;
+        if (nl_.owners() == p_.size())
+            for (std::uint32_t k = nl_.begin(i); k < nl_.end(i); ++k) {
+                const std::uint32_t j = nl_.partner(k);
+                const double d = norm(box_.minimum_image(p_.position[i], p_.position[j]));
+                if (const double overlap = r + p_.radius[j] - d; overlap > 0.0)
+                    out.push_back(overlap / std::min(r, p_.radius[j]));
+            }
+        if (substrate_on_ && z < r) out.push_back((r - z) / r);
+    }
+    return out;
+}
+
 void Simulation::remove_particles(const std::vector<std::size_t>& which) {
     if (which.empty()) return;
     if (settings_.integrator != Integrator::explicit_verlet)
@@ -371,10 +387,12 @@ EngineState Simulation::gathered_state() const {
 // the ghosts, and the list over owned particles and ghosts, carrying the states over by ids. No
 // re-sort: it would mix ghosts into the owned particles.
 template <class RangeFn, class OwnerRangeFn>
-void Simulation::rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range) {
+void Simulation::rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range, bool sort) {
     parallel::Halo& halo = *halo_;
     const parallel::Decomposition& d = halo.decomposition();
     const std::size_t own = halo.owned();
+    const auto [r_max, range_max] = largest_radius_and_range();
+    halo.rebalance(p_, pairs_per_owned(), 2.0 * r_max + range_max + settings_.skin);
     std::vector<NeighborList::Entry> entries;
     if (nl_.owners() == p_.size())
         entries = nl_.state_entries(p_);
@@ -406,7 +424,7 @@ void Simulation::rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range)
     } else {
         halo.migrate(p_, body_state_);
     }
-    const auto [r_max, range_max] = largest_radius_and_range();
+    if (sort) sort_owned(owner_range);
     std::vector<double> reach(halo.owned());
     for (std::size_t i = 0; i < reach.size(); ++i)
         reach[i] = p_.radius[i] + r_max + range_max + settings_.skin;
@@ -432,6 +450,35 @@ void Simulation::rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range)
     nl_.build(p_, box_, range, owner_range, false, halo.owned());
 }
 
+std::vector<double> Simulation::pairs_per_owned() const {
+    const std::size_t own = owned();
+    std::vector<double> pairs(own, 0.0);
+    if (nl_.owners() != p_.size()) return pairs; // no list over this store yet (a resumed state)
+    for (std::size_t i = 0; i < p_.size(); ++i)
+        for (std::uint32_t s = nl_.begin(i); s < nl_.end(i); ++s) {
+            if (i < own) pairs[i] += 1.0;
+            if (const std::uint32_t j = nl_.partner(s); j < own) pairs[j] += 1.0;
+        }
+    return pairs;
+}
+
+template <class OwnerRangeFn>
+void Simulation::sort_owned(OwnerRangeFn&& owner_range) {
+    const std::vector<std::uint32_t> order = nl_.spatial_order(p_, box_, owner_range);
+    p_.permute(order);
+    auto follow = [&](auto& v) {
+        std::remove_reference_t<decltype(v)> moved(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k) moved[k] = v[order[k]];
+        v.swap(moved);
+    };
+    follow(body_state_);
+    if (semi_implicit()) {
+        follow(body_resistance_);
+        follow(accel_);
+        follow(alpha_);
+    }
+}
+
 void Simulation::rebuild_neighbors() {
     const bool sort =
         settings_.sort_every > 0 &&
@@ -444,7 +491,7 @@ void Simulation::rebuild_neighbors() {
     };
     const double t0 = omp_get_wtime();
     if (halo_) {
-        rebuild_decomposed(range, owner_range);
+        rebuild_decomposed(range, owner_range, sort);
     } else if (sort) {
         // The body laws' states and (semi-implicit) resistances are kept in storage order: carry
         // them to the new order by id.

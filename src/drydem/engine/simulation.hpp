@@ -197,6 +197,10 @@ public:
     /// Takes the particles `which` (storage order) out of the packing: the calendering's
     /// extruded agglomerates (model.md M-2.13). Their pair states and bonds go with them; the
     /// others keep theirs and their order. Explicit integrator only (RunError otherwise).
+    /// δ / min(r_i, r_j) of every overlapping pair in the rows of the owned particles (on
+    /// several ranks each pair is in one rank's rows) and (r - z) / r of every owned particle on
+    /// the substrate: the time series' overlap percentile without a pair search.
+    [[nodiscard]] std::vector<double> relative_overlaps() const;
     void remove_particles(const std::vector<std::size_t>& which);
     /// Translational + rotational kinetic energy [J].
     [[nodiscard]] double kinetic_energy() const;
@@ -229,7 +233,13 @@ private:
     void rebuild_neighbors();
     /// Under a decomposition: pair states that change rank, migration, ghosts, then the list.
     template <class RangeFn, class OwnerRangeFn>
-    void rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range);
+    void rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range, bool sort);
+    /// Pairs in the neighbour list per owned particle (the work the rebalancing weighs).
+    [[nodiscard]] std::vector<double> pairs_per_owned() const;
+    /// Reorders the owned particles (no ghosts in the store) by cell, with what the engine keeps
+    /// per particle.
+    template <class OwnerRangeFn>
+    void sort_owned(OwnerRangeFn&& owner_range);
     /// Sets the decomposition up from settings_.ranks (constructor).
     void decompose();
     /// state() on several ranks.

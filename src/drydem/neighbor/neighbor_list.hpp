@@ -62,6 +62,13 @@ public:
     void build(ParticleStore& p, const Box& box, RangeFn&& range, OwnerRangeFn&& owner_range,
                bool sort, std::size_t owned = SIZE_MAX);
 
+    /// The order build(sort = true) gives the particles (by cell of the search grid), as
+    /// indices into `p`: for a store that sorts itself before it is built (a decomposed rank sorts
+    /// its owned particles before the ghosts are appended).
+    template <class OwnerRangeFn>
+    [[nodiscard]] std::vector<std::uint32_t> spatial_order(const ParticleStore& p, const Box& box,
+                                                           OwnerRangeFn&& owner_range);
+
     /// After particles left the store: `new_index[i]` is old particle i's new index, UINT32_MAX
     /// for one that left. Its rows and every pair with it go; the rest keep their states.
     void keep_rows(const std::vector<std::uint32_t>& new_index);
@@ -109,6 +116,15 @@ private:
         [[nodiscard]] int index(int ix, int iy, int iz) const { return (iz * ny + iy) * nx + ix; }
     };
     void bin(const ParticleStore& p, const Box& box, double cell_size);
+    /// The grid's cell: the smallest search radius of an owner, its own reach to partners no
+    /// larger than itself.
+    template <class OwnerRangeFn>
+    [[nodiscard]] double search_cell(const ParticleStore& p, OwnerRangeFn&& owner_range) const {
+        double smallest = INFINITY;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            smallest = std::min(smallest, 2.0 * p.radius[i] + owner_range(i));
+        return std::isfinite(smallest) ? smallest + skin_ : 1e-6;
+    }
     void sort_by_cell(ParticleStore& p);
     void carry_states(const ParticleStore& p);
 
@@ -126,6 +142,13 @@ private:
     bool carry_pending_ = false; ///< carry_from() filled the old list for the next build
     std::vector<std::uint32_t> order_;
 };
+
+template <class OwnerRangeFn>
+std::vector<std::uint32_t> NeighborList::spatial_order(const ParticleStore& p, const Box& box,
+                                                       OwnerRangeFn&& owner_range) {
+    bin(p, box, search_cell(p, owner_range));
+    return {grid_.cell_items.begin(), grid_.cell_items.end()};
+}
 
 template <class RangeFn, class OwnerRangeFn>
 void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
@@ -146,14 +169,7 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
             for (std::size_t i = 0; i < n; ++i) old_row_of_id_[p.id[i]] = std::uint32_t(i);
     }
 
-    // Search radius of each owner: its own reach to partners no larger than itself.
-    double cell = 0.0;
-    {
-        double smallest = INFINITY;
-        for (std::size_t i = 0; i < n; ++i)
-            smallest = std::min(smallest, 2.0 * p.radius[i] + owner_range(i));
-        cell = std::isfinite(smallest) ? smallest + skin_ : 1e-6;
-    }
+    const double cell = search_cell(p, owner_range);
     bin(p, box, cell);
     if (sort) {
         sort_by_cell(p);

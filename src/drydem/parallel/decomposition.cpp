@@ -25,12 +25,28 @@ int Decomposition::rank_at(int ix, int iy) const {
     return wrap_index(iy, py) * px + wrap_index(ix, px);
 }
 
+namespace {
+/// The part of a periodic axis cut at `cuts` (empty: `parts` equal ones) that holds u in [0, l).
+int part_of(double u, const std::vector<double>& cuts, int parts, double l) {
+    if (cuts.empty()) return std::clamp(int(u / (l / parts)), 0, parts - 1);
+    const auto it = std::upper_bound(cuts.begin() + 1, cuts.end() - 1, u);
+    return int(it - cuts.begin()) - 1;
+}
+double narrowest(const std::vector<double>& cuts, int parts, double l) {
+    if (cuts.empty()) return l / parts;
+    double w = l;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) w = std::min(w, cuts[k + 1] - cuts[k]);
+    return w;
+}
+} // namespace
+
+double Decomposition::width_x() const { return narrowest(cut_x, px, box.lx); }
+double Decomposition::width_y() const { return narrowest(cut_y, py, box.ly); }
+
 int Decomposition::owner(const Vec3& x) const {
     Vec3 w = x;
     box.wrap(w);
-    const int ix = std::clamp(int(w.x / width_x()), 0, px - 1);
-    const int iy = std::clamp(int(w.y / width_y()), 0, py - 1);
-    return rank_at(ix, iy);
+    return rank_at(part_of(w.x, cut_x, px, box.lx), part_of(w.y, cut_y, py, box.ly));
 }
 
 std::vector<int> Decomposition::neighbors(int rank) const {
@@ -48,8 +64,8 @@ std::vector<int> Decomposition::neighbors(int rank) const {
 
 double Decomposition::distance2(int rank, const Vec3& x) const {
     const int ix = rank % px, iy = rank / px;
-    const double dx = axis_distance(x.x, ix * width_x(), width_x(), box.lx);
-    const double dy = axis_distance(x.y, iy * width_y(), width_y(), box.ly);
+    const double dx = axis_distance(x.x, x_lo(ix), x_hi(ix) - x_lo(ix), box.lx);
+    const double dy = axis_distance(x.y, y_lo(iy), y_hi(iy) - y_lo(iy), box.ly);
     return dx * dx + dy * dy;
 }
 
@@ -87,6 +103,36 @@ Decomposition decompose(const Box& box, int ranks, double reach) {
             ranks, box.lx * 1e6, box.ly * 1e6, reach * 1e6, max_x, max_y, max_x * max_y));
     }
     return best;
+}
+
+std::vector<double> balanced_cuts(const std::vector<double>& weight, double length,
+                                  const std::vector<double>& now, double min_width,
+                                  double max_shift) {
+    const int parts = int(now.size()) - 1;
+    if (parts < 2 || weight.empty()) return now;
+    double total = 0.0;
+    for (double w : weight) total += w;
+    if (!(total > 0.0)) return now;
+    // Where the cumulative weight reaches k/parts of the total (linear within a bin).
+    const double bin = length / double(weight.size());
+    std::vector<double> cuts = now;
+    std::size_t b = 0;
+    double below = 0.0; // weight of the bins before b
+    for (int k = 1; k < parts; ++k) {
+        const double target = total * k / parts;
+        while (b < weight.size() && below + weight[b] < target) below += weight[b++];
+        const double inside =
+            b < weight.size() && weight[b] > 0.0 ? (target - below) / weight[b] : 0.0;
+        const double ideal = (double(b) + inside) * bin;
+        cuts[std::size_t(k)] =
+            std::clamp(ideal, now[std::size_t(k)] - max_shift, now[std::size_t(k)] + max_shift);
+    }
+    // No part narrower than min_width: push the cuts apart from the left, then from the right.
+    for (int k = 1; k < parts; ++k)
+        cuts[std::size_t(k)] = std::max(cuts[std::size_t(k)], cuts[std::size_t(k - 1)] + min_width);
+    for (int k = parts - 1; k >= 1; --k)
+        cuts[std::size_t(k)] = std::min(cuts[std::size_t(k)], cuts[std::size_t(k + 1)] - min_width);
+    return cuts;
 }
 
 } // namespace drydem::parallel

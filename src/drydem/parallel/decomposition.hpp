@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Spatial domain decomposition of the periodic cell in x and y (the film is thin in z): a grid of
-// px × py equal subdomains, one per MPI rank (docs/parallel.md). The film is homogeneous in x and
-// y, so equal subdomains carry equal work; z is never cut.
+// px × py subdomains, one per MPI rank (docs/parallel.md), cut by px + 1 planes along x and py + 1
+// along y. The cuts start equal; a film of a few thousand spheres, with NCM spheres of ~200 CB
+// neighbours each, is not homogeneous on the scale of a subdomain, so the engine moves the cuts
+// to balance the measured work (`balanced_cuts`, the "shift" balancing of LAMMPS); z is never cut.
 //
 // A particle is owned by the rank whose subdomain holds its (wrapped) centre. A rank also keeps
 // ghost copies of the particles of its neighbours that lie within their reach of its subdomain;
@@ -18,9 +20,18 @@ struct Decomposition {
     Box box{};
     int px = 1, py = 1; ///< subdomains along x and y
 
+    /// Cut positions along x (px + 1, from 0 to box.lx) and y; empty: equal subdomains.
+    std::vector<double> cut_x{}, cut_y{};
+
     [[nodiscard]] int ranks() const { return px * py; }
-    [[nodiscard]] double width_x() const { return box.lx / px; }
-    [[nodiscard]] double width_y() const { return box.ly / py; }
+    /// Where column ix starts and ends along x, row iy along y [m].
+    [[nodiscard]] double x_lo(int ix) const { return cut_x.empty() ? ix * box.lx / px : cut_x[ix]; }
+    [[nodiscard]] double x_hi(int ix) const { return x_lo(ix + 1); }
+    [[nodiscard]] double y_lo(int iy) const { return cut_y.empty() ? iy * box.ly / py : cut_y[iy]; }
+    [[nodiscard]] double y_hi(int iy) const { return y_lo(iy + 1); }
+    /// The narrowest column and row [m].
+    [[nodiscard]] double width_x() const;
+    [[nodiscard]] double width_y() const;
     /// Rank of the subdomain in column ix, row iy (both taken periodically).
     [[nodiscard]] int rank_at(int ix, int iy) const;
     /// The rank that owns a point (x and y wrapped into the box or not).
@@ -40,5 +51,13 @@ struct Decomposition {
 /// plus skin, docs/parallel.md). Ties go to more cuts along x. InputError when no grid leaves
 /// subdomains that wide, naming the rank count, the widths and the reach.
 Decomposition decompose(const Box& box, int ranks, double reach);
+
+/// Cuts that split `weight` (a histogram of the work along one periodic axis of length `length`,
+/// in equal bins) into `parts` equal shares, from the present cuts `now` (parts + 1 values, 0 to
+/// length): each cut moves at most `max_shift`, and no part becomes narrower than `min_width`
+/// (the reach). The same inputs give the same cuts on every rank.
+std::vector<double> balanced_cuts(const std::vector<double>& weight, double length,
+                                  const std::vector<double>& now, double min_width,
+                                  double max_shift);
 
 } // namespace drydem::parallel

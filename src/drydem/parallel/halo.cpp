@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <climits>
+#include <cmath>
 
 namespace drydem::parallel {
 
@@ -100,24 +101,59 @@ void Halo::make_ghosts(ParticleStore& p, const std::vector<double>& reach) {
     }
 }
 
+void Halo::rebalance(const ParticleStore& p, const std::vector<double>& pairs, double min_width) {
+    constexpr std::size_t kBins = 512;
+    const double shift = 0.25 * std::min(d_.width_x(), d_.width_y());
+    auto balance = [&](int parts, double length, auto coordinate, std::vector<double>& cuts) {
+        if (parts < 2) return;
+        // Two histograms in one reduction: pair incidences, then particle counts.
+        std::vector<double> h(2 * kBins, 0.0), all(2 * kBins, 0.0);
+        for (std::size_t i = 0; i < owned_; ++i) {
+            double u = std::fmod(coordinate(p.position[i]), length);
+            if (u < 0.0) u += length;
+            const auto b = std::min(kBins - 1, std::size_t(u / length * double(kBins)));
+            h[b] += pairs[i];
+            h[kBins + b] += 1.0;
+        }
+        MPI_Allreduce(h.data(), all.data(), int(h.size()), MPI_DOUBLE, MPI_SUM, comm_);
+        double incidences = 0.0, count = 0.0;
+        for (std::size_t b = 0; b < kBins; ++b) incidences += all[b], count += all[kBins + b];
+        const double mean = count > 0.0 ? incidences / count : 0.0;
+        std::vector<double> work(kBins);
+        for (std::size_t b = 0; b < kBins; ++b) work[b] = all[b] + (mean + 1.0) * all[kBins + b];
+        std::vector<double> now = cuts;
+        if (now.empty())
+            for (int k = 0; k <= parts; ++k) now.push_back(length * k / parts);
+        cuts = balanced_cuts(work, length, now, min_width, shift);
+    };
+    balance(
+        d_.px, d_.box.lx, [](const Vec3& x) { return x.x; }, d_.cut_x);
+    balance(
+        d_.py, d_.box.ly, [](const Vec3& x) { return x.y; }, d_.cut_y);
+}
+
 void Halo::update_ghosts(ParticleStore& p) {
-    std::vector<Bytes> send(neighbours_.size());
-    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-        send[k].reserve(ghost_send_[k].size() * sizeof(Motion));
-        for (std::uint32_t i : ghost_send_[k])
-            put(send[k], Motion{p.position[i], p.velocity[i], p.omega[i]});
+    // Every step: the buffers are kept (sized at the rebuild), packed and unpacked with memcpy.
+    const std::size_t n = neighbours_.size();
+    motion_out_.resize(n);
+    motion_in_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        motion_out_[k].resize(ghost_send_[k].size() * sizeof(Motion));
+        motion_in_[k].resize(ghost_count_[k] * sizeof(Motion));
+        std::byte* out = motion_out_[k].data();
+        for (std::uint32_t i : ghost_send_[k]) {
+            const Motion m{p.position[i], p.velocity[i], p.omega[i]};
+            std::memcpy(out, &m, sizeof m);
+            out += sizeof m;
+        }
     }
-    std::vector<std::size_t> expected(neighbours_.size());
-    for (std::size_t k = 0; k < neighbours_.size(); ++k)
-        expected[k] = ghost_count_[k] * sizeof(Motion);
-    const std::vector<Bytes> got = exchange(send, &expected);
-    for (std::size_t k = 0; k < got.size(); ++k) {
-        if (got[k].size() != ghost_count_[k] * sizeof(Motion))
-            throw RunError(fmt::format("parallel::Halo: rank {} sent {} bytes for {} ghosts",
-                                       neighbours_[k], got[k].size(), ghost_count_[k]));
-        std::size_t at = 0;
+    exchange_sized(motion_out_, motion_in_);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::byte* in = motion_in_[k].data();
         for (std::size_t g = ghost_begin_[k]; g < ghost_begin_[k] + ghost_count_[k]; ++g) {
-            const Motion m = take<Motion>(got[k], at);
+            Motion m;
+            std::memcpy(&m, in, sizeof m);
+            in += sizeof m;
             p.position[g] = m.position;
             p.velocity[g] = m.velocity;
             p.omega[g] = m.omega;
@@ -229,6 +265,34 @@ std::uint32_t Halo::id_of_max(double value, std::uint32_t id) const {
     std::uint32_t out = id;
     MPI_Bcast(&out, 1, MPI_UINT32_T, rank_of_max(value, rank_, comm_), comm_);
     return out;
+}
+
+void Halo::exchange_sized(const std::vector<Bytes>& send, std::vector<Bytes>& got) {
+    const double t0 = MPI_Wtime();
+    const std::size_t n = neighbours_.size();
+    std::vector<MPI_Request> req;
+    req.reserve(2 * n);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (got[k].empty()) continue;
+        req.emplace_back();
+        MPI_Irecv(got[k].data(), int(got[k].size()), MPI_BYTE, neighbours_[k], kDataTag, comm_,
+                  &req.back());
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (send[k].empty()) continue;
+        if (send[k].size() > std::size_t(INT_MAX))
+            throw RunError(fmt::format("parallel::Halo: {} bytes for rank {} exceed one MPI "
+                                       "message; use more ranks",
+                                       send[k].size(), neighbours_[k]));
+        req.emplace_back();
+        MPI_Isend(send[k].data(), int(send[k].size()), MPI_BYTE, neighbours_[k], kDataTag, comm_,
+                  &req.back());
+        ++counters_.messages;
+        counters_.bytes += send[k].size();
+    }
+    MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE);
+    ++counters_.exchanges;
+    counters_.seconds += MPI_Wtime() - t0;
 }
 
 std::vector<Halo::Bytes> Halo::exchange(const std::vector<Bytes>& send,

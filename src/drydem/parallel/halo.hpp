@@ -64,6 +64,14 @@ public:
     template <class... T>
     void keep_owned(ParticleStore& p, std::vector<T>&... extra);
 
+    /// Moves the cuts of the decomposition so that every rank gets an equal share of the work
+    /// (parallel::balanced_cuts), before a migration (call with the ghosts dropped or not: only
+    /// the owned particles count). A particle's work is its pairs in the neighbour list
+    /// (`pairs[i]` for owned particle i) plus the film's mean pairs per particle (its own
+    /// integration); a cut moves at most a quarter of the narrowest subdomain, and none gets
+    /// narrower than `min_width`. A collective.
+    void rebalance(const ParticleStore& p, const std::vector<double>& pairs, double min_width);
+
     /// Drops the ghosts, sends each owned particle whose centre left this subdomain to its owner
     /// with its element of every `extra` array (one per owned particle, trivially copyable), and
     /// appends the ones that arrive (by sending rank, then in the sender's order). The particles
@@ -122,6 +130,8 @@ private:
     /// `expected` (bytes per neighbour) when both sides know the sizes, else they are traded.
     std::vector<Bytes> exchange(const std::vector<Bytes>& send,
                                 const std::vector<std::size_t>* expected = nullptr);
+    /// The same where both sides know the sizes: into `got`, sized by the caller (kept buffers).
+    void exchange_sized(const std::vector<Bytes>& send, std::vector<Bytes>& got);
     /// Every rank's bytes, on every rank, in rank order.
     [[nodiscard]] Bytes gather_bytes(const std::byte* mine, std::size_t size) const;
     /// The index of `rank` in neighbors(), or -1.
@@ -163,6 +173,7 @@ private:
     /// sent here start in the store and how many there are.
     std::vector<std::vector<std::uint32_t>> ghost_send_;
     std::vector<std::size_t> ghost_begin_, ghost_count_;
+    std::vector<Bytes> motion_out_, motion_in_; ///< update_ghosts' buffers, kept between steps
     HaloCounters counters_;
 };
 
