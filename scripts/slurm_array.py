@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 """Runs a list of `drydem run` cases as a Slurm job array (docs/calibration.md "Slurm").
 
-One array task per run; each task takes its thread count from SLURM_CPUS_PER_TASK, and resumes
+One array task per run; each task takes its thread count from SLURM_CPUS_PER_TASK (and, with
+`ranks_per_run` > 1, runs `srun drydem run ...` over its --ntasks MPI ranks), and resumes
 from the run folder's checkpoint when it has one (a task that hit its time limit was stopped by
 SIGTERM, wrote a checkpoint and a summary saying so). After the array has ended, every task
 whose run was stopped (not completed, not failed for good) is submitted again, up to
@@ -12,7 +13,7 @@ whose run was stopped (not completed, not failed for good) is submitted again, u
     slurm_array.py TASKS_JSON
 
 TASKS_JSON: {"drydem": EXE, "work": DIR, "name": NAME, "scheduler": {"partition": "",
-"time_limit_s": 0, "cpus_per_task": 1, "resubmits": 3}, "tasks": [{"dir": RUN_DIR, "args":
+"time_limit_s": 0, "cpus_per_task": 1, "ranks_per_run": 1, "resubmits": 3}, "tasks": [{"dir": RUN_DIR, "args":
 ["run", CONFIG, "-o", RUN_DIR, ...]}]}. Prints one line per submission; exit 0 when every task
 ended (completed or failed), 1 when sbatch could not submit.
 """
@@ -64,10 +65,12 @@ def run_args(drydem, task, threads, quiet=True, plots=False):
     return [drydem] + task["args"] + tail
 
 
-def task_script(drydem, task, plots=False):
-    """The same decision as run_args, made by the task itself when it starts (bash)."""
+def task_script(drydem, task, plots=False, ranks=1):
+    """The same decision as run_args, made by the task itself when it starts (bash). A run of
+    several ranks is started by srun over the task's --ntasks (the cluster's MPI plugin, e.g.
+    MpiDefault=pmix in slurm.conf or SLURM_MPI_TYPE, connects Open MPI to it)."""
     d = shlex.quote(task["dir"])
-    exe = shlex.quote(drydem)
+    exe = ("srun " if ranks > 1 else "") + shlex.quote(drydem)
     args = " ".join(shlex.quote(a) for a in task["args"])
     flags = "--quiet" + ("" if plots else " --no-plots")
     markers = "|".join(f'"stop_reason": "{r}"' for r in STOPPED_REASONS)
@@ -106,6 +109,7 @@ class Submitter:
 
     def run(self, tasks, plots=False):
         """Runs `tasks` until each is completed or failed for good (or resubmits are used up)."""
+        ranks = int(self.sched.get("ranks_per_run", 1))
         for attempt in range(int(self.sched.get("resubmits", 3)) + 1):
             todo = [t for t in tasks if run_state(t["dir"]) not in ("completed", "failed")]
             if not todo:
@@ -119,12 +123,13 @@ class Submitter:
             for k, t in enumerate(todo):
                 os.makedirs(t["dir"], exist_ok=True)
                 with open(os.path.join(rdir, f"task_{k}.sh"), "w") as f:
-                    f.write(task_script(self.drydem, t, plots))
+                    f.write(task_script(self.drydem, t, plots, ranks))
             job = os.path.join(rdir, "job.sh")
             with open(job, "w") as f:
                 f.write(f"#!/bin/bash\nexec bash {shlex.quote(rdir)}/task_${{SLURM_ARRAY_TASK_ID}}.sh\n")
             cmd = ["sbatch", "--parsable", "--wait", f"--array=0-{len(todo) - 1}",
                    f"--cpus-per-task={int(self.sched.get('cpus_per_task', 1))}",
+                   f"--ntasks={ranks}",
                    f"--job-name=drydem-{self.name}"[:64], f"--output={rdir}/task_%a.out",
                    f"--chdir={self.work}"]
             if self.sched.get("partition"):

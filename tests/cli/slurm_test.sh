@@ -59,5 +59,24 @@ assert 0.3 <= res['best']['contact.friction']['value'] <= 1.2, res
 print('calibration via slurm ok: best', {k: round(v['value'], 4) for k, v in res['best'].items()})
 PY
 [[ -s $work/cal/calibrated.toml ]] || fail "no calibrated.toml"
+
+# --- a study whose runs use two MPI ranks each (scheduler.ranks_per_run: sbatch --ntasks=2, srun) ---
+"$drydem" study "$study_cfg" --loadings 1.5 --seeds 1 --scheduler slurm -o "$work/study2" --no-plots \
+  --quiet --set scheduler.ranks_per_run=2
+rc=$?
+[[ $rc -eq 0 ]] || { cat "$work/study2/slurm.txt"; cat "$work"/study2/slurm/round_*/task_*.out; fail "two-rank study exit $rc"; }
+grep -q -- '--ntasks=2' "$work/study2/slurm.txt" || fail "the array was not submitted with --ntasks=2"
+/usr/bin/python3 - "$work/study2" <<'PY' || fail "two-rank study results"
+import glob, json, sys
+runs = glob.glob(sys.argv[1] + '/runs/*/summary.json')
+assert len(runs) == 1, runs
+r = json.load(open(runs[0]))
+assert r['status'] == 'completed' and r['ranks'] == 2, (r['status'], r.get('ranks'))
+print('study via slurm with 2 ranks per run ok:', round(r['final_thickness_um'], 3), 'um')
+PY
+# The local scheduler runs one process per run: several ranks per run are refused (exit 2).
+"$drydem" study "$study_cfg" --loadings 1.5 --seeds 1 -o "$work/study3" --quiet --no-plots \
+  --set scheduler.ranks_per_run=2 2> "$work/study3.err"
+[[ $? -eq 2 ]] && grep -q "scheduler.ranks_per_run" "$work/study3.err" || fail "local study with 2 ranks per run not refused"
 squeue -h | grep -q . && fail "jobs left in the queue"
 echo "slurm test passed"

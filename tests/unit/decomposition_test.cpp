@@ -124,3 +124,41 @@ TEST(Decomposition, NeighboursAreSymmetricUniqueAndNeverSelf) {
         EXPECT_EQ(d.neighbors(0).size(), expect) << px << " x " << py;
     }
 }
+
+// Moved cuts (the balancing): ownership and the distance to a subdomain follow them.
+TEST(Decomposition, OwnershipFollowsMovedCuts) {
+    Decomposition d = decompose(kBox, 2, kReach);
+    d.cut_x = {0.0, 50e-6, 75e-6};
+    EXPECT_EQ(d.owner({45e-6, 10e-6, 1e-6}), 0);
+    EXPECT_EQ(d.owner({55e-6, 10e-6, 1e-6}), 1);
+    EXPECT_EQ(d.owner({-1e-6, 10e-6, 1e-6}), 1); // wraps to 74 um
+    EXPECT_DOUBLE_EQ(d.width_x(), 25e-6);
+    EXPECT_DOUBLE_EQ(d.distance2(1, {45e-6, 0.0, 0.0}), 25e-12);    // 5 um left of rank 1
+    EXPECT_NEAR(d.distance2(0, {60e-6, 0.0, 0.0}), 100e-12, 1e-24); // 10 um right of rank 0
+    EXPECT_NEAR(d.distance2(0, {72e-6, 0.0, 0.0}), 9e-12, 1e-24);   // 3 um across the edge
+}
+
+// The cuts split a work histogram into equal shares, move at most max_shift, and keep every
+// part at least min_width wide.
+TEST(Decomposition, BalancedCutsSplitTheWork) {
+    const double l = 75e-6;
+    std::vector<double> work(300, 1.0);
+    for (std::size_t b = 0; b < 100; ++b) work[b] = 3.0; // the first third weighs 3x
+    const std::vector<double> uniform{0.0, 37.5e-6, 75e-6};
+    // Total 300 + 200 = 500; half (250) is reached at bin 83.3 (83.3 x 3): x = 20.8 um.
+    const auto free = balanced_cuts(work, l, uniform, 10e-6, 1.0);
+    EXPECT_NEAR(free[1], 250.0 / 3.0 / 300.0 * l, 1e-12);
+    EXPECT_DOUBLE_EQ(free[0], 0.0);
+    EXPECT_DOUBLE_EQ(free[2], l);
+    // At most 5 um per call.
+    const auto slow = balanced_cuts(work, l, uniform, 10e-6, 5e-6);
+    EXPECT_NEAR(slow[1], 32.5e-6, 1e-12);
+    // Never narrower than 25 um.
+    const auto wide = balanced_cuts(work, l, uniform, 25e-6, 1.0);
+    EXPECT_NEAR(wide[1], 25e-6, 1e-12);
+    // Four parts of uniform work stay uniform; no work at all keeps the cuts.
+    const std::vector<double> four{0.0, 18.75e-6, 37.5e-6, 56.25e-6, 75e-6};
+    const auto same = balanced_cuts(std::vector<double>(300, 2.0), l, four, 10e-6, 1.0);
+    for (std::size_t k = 0; k < four.size(); ++k) EXPECT_NEAR(same[k], four[k], 1e-12);
+    EXPECT_EQ(balanced_cuts(std::vector<double>(300, 0.0), l, four, 10e-6, 1.0), four);
+}

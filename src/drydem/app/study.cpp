@@ -96,11 +96,7 @@ void run_on_slurm(Study& st, const std::string& exe) {
                            {"work", fs::absolute(st.o.output_dir).string()},
                            {"name", base.name},
                            {"plots", st.o.plots},
-                           {"scheduler",
-                            {{"partition", base.slurm_partition},
-                             {"time_limit_s", base.slurm_time_limit},
-                             {"cpus_per_task", base.slurm_cpus_per_task},
-                             {"resubmits", base.slurm_resubmits}}}};
+                           {"scheduler", scheduler_settings(base)}};
     spec["tasks"] = nlohmann::json::array();
     for (std::size_t k = 0; k < st.cases.size(); ++k) {
         const fs::path dir = fs::absolute(st.run_dir(k));
@@ -111,8 +107,8 @@ void run_on_slurm(Study& st, const std::string& exe) {
     const fs::path tasks_file = st.o.output_dir / "slurm_tasks.json";
     write_file_atomically(tasks_file, [&](std::ostream& os) { os << spec.dump(1) << "\n"; });
     const fs::path script = script_path("slurm_array.py");
-    st.say(fmt::format("slurm: {} runs as one job array, {} cpu(s) per task", st.cases.size(),
-                       base.slurm_cpus_per_task));
+    st.say(fmt::format("slurm: {} runs as one job array, {} rank(s) x {} cpu(s) per run",
+                       st.cases.size(), base.slurm_ranks_per_run, base.slurm_cpus_per_task));
     const pid_t pid = spawn_process({"/usr/bin/python3", script.string(), tasks_file.string()},
                                     st.o.output_dir / "slurm.txt");
     int status = 0;
@@ -205,7 +201,8 @@ int run_study(const Config& base, const StudyOptions& o) {
                        "with {} thread(s) each; results in {}",
                        base.name, st.cases.size() / std::size_t(seeds) / factors, factors, seeds,
                        st.cases.size(), st.jobs, st.threads, o.output_dir.string()));
-    install_stop_handlers(); // SIGINT/SIGTERM reach the running cases
+    install_stop_handlers();        // SIGINT/SIGTERM reach the running cases
+    (void)scheduler_settings(base); // refuses runs of several ranks on the local scheduler
     if (base.scheduler == "slurm")
         run_on_slurm(st, self_executable());
     else

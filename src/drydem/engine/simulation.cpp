@@ -392,7 +392,13 @@ void Simulation::rebuild_decomposed(RangeFn&& range, OwnerRangeFn&& owner_range,
     const parallel::Decomposition& d = halo.decomposition();
     const std::size_t own = halo.owned();
     const auto [r_max, range_max] = largest_radius_and_range();
-    halo.rebalance(p_, pairs_per_owned(), 2.0 * r_max + range_max + settings_.skin);
+    // This rank's own work since the last rebalance: the elapsed time less its waits in MPI.
+    const double now = omp_get_wtime(), waited = parallel::waited_seconds();
+    const double busy =
+        balance_clock_ > 0.0 ? (now - balance_clock_) - (waited - balance_waited_) : 0.0;
+    halo.rebalance(p_, pairs_per_owned(), 2.0 * r_max + range_max + settings_.skin, busy);
+    balance_clock_ = omp_get_wtime();
+    balance_waited_ = parallel::waited_seconds();
     std::vector<NeighborList::Entry> entries;
     if (nl_.owners() == p_.size())
         entries = nl_.state_entries(p_);

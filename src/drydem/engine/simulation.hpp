@@ -335,6 +335,9 @@ private:
     /// A state resumed on several ranks: the pair states of the whole film's list, keyed by ids,
     /// for the first rebuild to carry over.
     std::vector<NeighborList::Entry> resumed_entries_;
+    /// When the cuts were last balanced, and this process's MPI waits then (omp_get_wtime,
+    /// parallel::waited_seconds): the measured work of the next balancing.
+    double balance_clock_ = 0.0, balance_waited_ = 0.0;
 };
 
 /// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below 2.

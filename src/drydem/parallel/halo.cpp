@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/parallel/halo.hpp"
+#include "drydem/parallel/mpi_world.hpp"
 #include <fmt/format.h>
 #include <algorithm>
 #include <climits>
@@ -101,8 +102,12 @@ void Halo::make_ghosts(ParticleStore& p, const std::vector<double>& reach) {
     }
 }
 
-void Halo::rebalance(const ParticleStore& p, const std::vector<double>& pairs, double min_width) {
+void Halo::rebalance(const ParticleStore& p, const std::vector<double>& pairs, double min_width,
+                     double busy_seconds) {
     constexpr std::size_t kBins = 512;
+    // The modelled work of this rank, to turn its measured time into a time per unit of work.
+    double mean_local = 0.0;
+    for (std::size_t i = 0; i < owned_; ++i) mean_local += pairs[i];
     const double shift = 0.25 * std::min(d_.width_x(), d_.width_y());
     auto balance = [&](int parts, double length, auto coordinate, std::vector<double>& cuts) {
         if (parts < 2) return;
@@ -119,8 +124,22 @@ void Halo::rebalance(const ParticleStore& p, const std::vector<double>& pairs, d
         double incidences = 0.0, count = 0.0;
         for (std::size_t b = 0; b < kBins; ++b) incidences += all[b], count += all[kBins + b];
         const double mean = count > 0.0 ? incidences / count : 0.0;
-        std::vector<double> work(kBins);
-        for (std::size_t b = 0; b < kBins; ++b) work[b] = all[b] + (mean + 1.0) * all[kBins + b];
+        // Modelled work: pairs plus the mean pairs per particle. With a measured time, each rank
+        // weighs its own particles' work by its seconds per unit of modelled work, so the cuts
+        // balance time (the pair laws differ in cost, the root writes the outputs).
+        const double modelled = mean_local + (mean + 1.0) * double(owned_);
+        const double scale = busy_seconds > 0.0 && modelled > 0.0 ? busy_seconds / modelled : 0.0;
+        std::vector<double> w(kBins, 0.0), total(kBins, 0.0);
+        for (std::size_t b = 0; b < kBins; ++b) w[b] = h[b] + (mean + 1.0) * h[kBins + b];
+        if (scale > 0.0)
+            for (double& x : w) x *= scale;
+        // Every rank weighs alike: all measured, or (the first rebalance) none.
+        int measured = scale > 0.0 ? 1 : 0, everywhere = 0;
+        MPI_Allreduce(&measured, &everywhere, 1, MPI_INT, MPI_MIN, comm_);
+        if (!everywhere)
+            for (std::size_t b = 0; b < kBins; ++b) w[b] = h[b] + (mean + 1.0) * h[kBins + b];
+        MPI_Allreduce(w.data(), total.data(), int(kBins), MPI_DOUBLE, MPI_SUM, comm_);
+        std::vector<double>& work = total;
         std::vector<double> now = cuts;
         if (now.empty())
             for (int k = 0; k <= parts; ++k) now.push_back(length * k / parts);
@@ -211,20 +230,26 @@ Halo::Bytes Halo::gather_bytes(const std::byte* mine, std::size_t size) const {
 }
 
 double Halo::all_max(double v) const {
+    const double t0 = MPI_Wtime();
     double out = v;
     MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, comm_);
+    add_waited(MPI_Wtime() - t0);
     return out;
 }
 
 double Halo::all_sum(double v) const {
+    const double t0 = MPI_Wtime();
     double out = v;
     MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, comm_);
+    add_waited(MPI_Wtime() - t0);
     return out;
 }
 
 std::uint64_t Halo::all_sum(std::uint64_t v) const {
+    const double t0 = MPI_Wtime();
     std::uint64_t out = v;
     MPI_Allreduce(&v, &out, 1, MPI_UINT64_T, MPI_SUM, comm_);
+    add_waited(MPI_Wtime() - t0);
     return out;
 }
 
@@ -293,6 +318,7 @@ void Halo::exchange_sized(const std::vector<Bytes>& send, std::vector<Bytes>& go
     MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE);
     ++counters_.exchanges;
     counters_.seconds += MPI_Wtime() - t0;
+    add_waited(MPI_Wtime() - t0);
 }
 
 std::vector<Halo::Bytes> Halo::exchange(const std::vector<Bytes>& send,
@@ -345,6 +371,7 @@ std::vector<Halo::Bytes> Halo::exchange(const std::vector<Bytes>& send,
     MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE);
     ++counters_.exchanges;
     counters_.seconds += MPI_Wtime() - t0;
+    add_waited(MPI_Wtime() - t0);
     return got;
 }
 

@@ -66,11 +66,13 @@ public:
 
     /// Moves the cuts of the decomposition so that every rank gets an equal share of the work
     /// (parallel::balanced_cuts), before a migration (call with the ghosts dropped or not: only
-    /// the owned particles count). A particle's work is its pairs in the neighbour list
+    /// the owned particles count). A particle's modelled work is its pairs in the neighbour list
     /// (`pairs[i]` for owned particle i) plus the film's mean pairs per particle (its own
-    /// integration); a cut moves at most a quarter of the narrowest subdomain, and none gets
-    /// narrower than `min_width`. A collective.
-    void rebalance(const ParticleStore& p, const std::vector<double>& pairs, double min_width);
+    /// integration); `busy_seconds`, this rank's measured time of work since the last call (0:
+    /// none yet), turns it into time, rank by rank. A cut moves at most a quarter of the
+    /// narrowest subdomain, and none gets narrower than `min_width`. A collective.
+    void rebalance(const ParticleStore& p, const std::vector<double>& pairs, double min_width,
+                   double busy_seconds);
 
     /// Drops the ghosts, sends each owned particle whose centre left this subdomain to its owner
     /// with its element of every `extra` array (one per owned particle, trivially copyable), and

@@ -20,6 +20,7 @@ int env_int(const char* name) {
 }
 
 bool started_here = false;
+double waited = 0.0; // waited_seconds()
 
 } // namespace
 
@@ -75,8 +76,13 @@ World world() {
     return w;
 }
 
+double waited_seconds() { return waited; }
+void add_waited(double seconds) { waited += seconds; }
+
 int broadcast(int value) {
+    const double t0 = MPI_Wtime();
     MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    waited += MPI_Wtime() - t0;
     return value;
 }
 
@@ -89,8 +95,10 @@ std::string broadcast(const std::string& text) {
 }
 
 int all_max(int value) {
+    const double t0 = MPI_Wtime();
     int out = value;
     MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    waited += MPI_Wtime() - t0;
     return out;
 }
 

@@ -41,6 +41,13 @@ World world();
 /// The largest value over the ranks.
 [[nodiscard]] int all_max(int value);
 
+/// Wall seconds this process has spent inside MPI waiting for other ranks (broadcast, all_max
+/// above, and the halo's exchanges and reductions): what the balancing subtracts from the elapsed
+/// time to find a rank's own work.
+[[nodiscard]] double waited_seconds();
+/// Adds to waited_seconds() (the halo's exchanges and reductions report their time here).
+void add_waited(double seconds);
+
 /// Ends every rank of the launch at once (MPI_Abort): for a failure on one rank that the others
 /// cannot learn of, so that no rank waits forever in an exchange. Without MPI it exits.
 [[noreturn]] void abort_all(int code);

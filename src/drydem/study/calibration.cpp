@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/study/calibration.hpp"
+#include "drydem/study/study.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/io/units.hpp"
 #include <fmt/format.h>
@@ -93,11 +94,7 @@ nlohmann::json calibration_spec(const Config& c, const std::string& drydem_execu
         }
         j["targets"].push_back(target);
     }
-    j["scheduler"] = {{"type", c.scheduler},
-                      {"partition", c.slurm_partition},
-                      {"time_limit_s", c.slurm_time_limit},
-                      {"cpus_per_task", c.slurm_cpus_per_task},
-                      {"resubmits", c.slurm_resubmits}};
+    j["scheduler"] = scheduler_settings(c);
     return j;
 }
 

@@ -10,6 +10,21 @@
 
 namespace drydem {
 
+nlohmann::json scheduler_settings(const Config& c) {
+    if (c.slurm_ranks_per_run > 1 && c.scheduler != "slurm")
+        throw InputError(fmt::format(
+            "config key 'scheduler.ranks_per_run' = {}: runs of several MPI ranks need "
+            "scheduler.type = \"slurm\" (local runs are one process each; start a single run "
+            "with mpirun instead)",
+            c.slurm_ranks_per_run));
+    return {{"type", c.scheduler},
+            {"partition", c.slurm_partition},
+            {"time_limit_s", c.slurm_time_limit},
+            {"cpus_per_task", c.slurm_cpus_per_task},
+            {"ranks_per_run", c.slurm_ranks_per_run},
+            {"resubmits", c.slurm_resubmits}};
+}
+
 std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings,
                                   int seeds) {
     if (seeds < 1) throw InputError(fmt::format("--seeds {}: allowed 1 or more", seeds));

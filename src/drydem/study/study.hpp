@@ -5,6 +5,7 @@
 // (blow-up, bad set-up) is recorded and the others go on.
 #pragma once
 #include "drydem/io/config.hpp"
+#include <nlohmann/json.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -25,6 +26,11 @@ struct StudyCase {
 /// empty study.shrinkage_rate_factors the config's rates. Seeds are the config's run.seed,
 /// run.seed + 1, ... Throws InputError for no seeds, a non-positive loading, or rate factors
 /// without dryer.schedule = "rates" (the dryer model sets its own rates).
+/// What scripts/slurm_array.py reads of the [scheduler] section (study and calibration alike).
+/// InputError when scheduler.ranks_per_run > 1 with the local scheduler (its runs are one
+/// process each).
+nlohmann::json scheduler_settings(const Config& c);
+
 std::vector<StudyCase> plan_study(const Config& base, const std::vector<double>& loadings,
                                   int seeds);
 
