@@ -17,13 +17,16 @@ Per step, one rank of P holding n = N/P particles in a w x h rectangle:
   reduce   t_r = m alpha log2(P)            m global reductions per step (stats, rebuild
                                             decision, stop agreement: m = 4)
   E(P) = n c / (t_c + t_h + t_r)
-R (the effective ghost reach) is fitted to the measured ghosts/owned of the 2-rank run; rho is the
+Subdomains narrower than REACH_MAX are refused by the decomposition. R (the effective ghost reach) is fitted to the measured ghosts/owned of the 2-rank run; rho is the
 film's particles per area. Network: alpha = 2 us latency, beta = 10 GB/s per rank (InfiniBand
 EDR/HDR class; a node's ranks share it, which the model ignores).
 """
 import glob, json, math, os, re, sys
 
 ALPHA = 2e-6
+# The largest reach of the paper's recipe (2 r_max + range + skin; the refusal message of
+# `mpirun -np 9 drydem run examples/quick.toml` prints it): no subdomain may be narrower.
+REACH_MAX = 17.32e-6
 BETA = 10e9
 BYTES_PER_GHOST = 72
 REDUCTIONS = 4
@@ -72,15 +75,17 @@ def main():
              "",
              "| ranks | film | particles/rank | subdomain [um] | ghosts/owned | compute ms | halo ms | reductions ms | efficiency |",
              "|---|---|---|---|---|---|---|---|---|"]
-    for ranks, side_um, label in [(64, 600, "20.1 recipe, 600 x 600 um (3.0 M)"),
-                                  (64, 150, "20.1 recipe, 150 x 150 um (188 k)"),
+    for ranks, side_um, label in [(4, 150, "20.1 recipe, 150 x 150 um (188 k)"),
+                                  (16, 150, "20.1 recipe, 150 x 150 um (188 k)"),
+                                  (64, 600, "20.1 recipe, 600 x 600 um (3.0 M)"),
+                                  (64, 300, "20.1 recipe, 300 x 300 um (750 k)"),
                                   (1024, 2400, "20.1 recipe, 2.4 x 2.4 mm (48 M)"),
                                   (1024, 600, "20.1 recipe, 600 x 600 um (3.0 M)")]:
         side = side_um * 1e-6
         p = int(round(math.sqrt(ranks)))
         w = side / p
         n = rho * side * side / ranks
-        if w < 2 * r_eff:
+        if w < REACH_MAX:
             lines.append(f"| {ranks} | {label} | {n:.0f} | {w*1e6:.1f} | - | - | - | - | "
                          f"refused: narrower than the reach |")
             continue

@@ -238,16 +238,10 @@ std::vector<Simulation::ContactOverlap> Simulation::contact_overlaps() const {
 
 std::vector<double> Simulation::relative_overlaps() const {
     std::vector<double> out;
-    for (std::size_t i = 0; i < owned(); ++i) {
-        const double r = p_.radius[i], z = p_.position[i].z;
-        if (nl_.owners() == p_.size())
-            for (std::uint32_t k = nl_.begin(i); k < nl_.end(i); ++k) {
-                const std::uint32_t j = nl_.partner(k);
-                const double d = norm(box_.minimum_image(p_.position[i], p_.position[j]));
-                if (const double overlap = r + p_.radius[j] - d; overlap > 0.0)
-                    out.push_back(overlap / std::min(r, p_.radius[j]));
-            }
-        if (substrate_on_ && z < r) out.push_back((r - z) / r);
+    for (const ContactOverlap& c : contact_overlaps()) {
+        if (c.i >= owned()) continue; // a ghost's row: its owner counts the pair
+        const double r = p_.radius[c.i];
+        out.push_back(c.overlap / (c.j == ContactOverlap::kWall ? r : std::min(r, p_.radius[c.j])));
     }
     return out;
 }

@@ -198,8 +198,8 @@ public:
     /// extruded agglomerates (model.md M-2.13). Their pair states and bonds go with them; the
     /// others keep theirs and their order. Explicit integrator only (RunError otherwise).
     /// δ / min(r_i, r_j) of every overlapping pair in the rows of the owned particles (on
-    /// several ranks each pair is in one rank's rows) and (r - z) / r of every owned particle on
-    /// the substrate: the time series' overlap percentile without a pair search.
+    /// several ranks each pair is in one rank's rows) and δ / r of every owned particle on the
+    /// substrate or the plate: the time series' overlap percentile without a pair search.
     [[nodiscard]] std::vector<double> relative_overlaps() const;
     void remove_particles(const std::vector<std::size_t>& which);
     /// Translational + rotational kinetic energy [J].

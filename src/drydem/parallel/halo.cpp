@@ -323,55 +323,29 @@ void Halo::exchange_sized(const std::vector<Bytes>& send, std::vector<Bytes>& go
 
 std::vector<Halo::Bytes> Halo::exchange(const std::vector<Bytes>& send,
                                         const std::vector<std::size_t>* expected) {
-    const double t0 = MPI_Wtime();
     const std::size_t n = neighbours_.size();
-    std::vector<std::uint64_t> out_size(n), in_size(n);
-    std::vector<MPI_Request> req;
-    req.reserve(2 * n);
-    for (std::size_t k = 0; k < n; ++k) {
-        out_size[k] = send[k].size();
-        if (out_size[k] > std::uint64_t(INT_MAX))
-            throw RunError(fmt::format("parallel::Halo: {} bytes for rank {} exceed one MPI "
-                                       "message; use more ranks",
-                                       out_size[k], neighbours_[k]));
-    }
+    std::vector<Bytes> got(n);
     if (expected) {
         // Sizes both sides know (the ghost update): no size round.
-        for (std::size_t k = 0; k < n; ++k) in_size[k] = (*expected)[k];
+        for (std::size_t k = 0; k < n; ++k) got[k].resize((*expected)[k]);
     } else {
+        const double t0 = MPI_Wtime();
+        std::vector<std::uint64_t> out_size(n), in_size(n);
+        std::vector<MPI_Request> req(2 * n);
         for (std::size_t k = 0; k < n; ++k) {
-            req.emplace_back();
-            MPI_Irecv(&in_size[k], 1, MPI_UINT64_T, neighbours_[k], kSizeTag, comm_, &req.back());
+            out_size[k] = send[k].size();
+            MPI_Irecv(&in_size[k], 1, MPI_UINT64_T, neighbours_[k], kSizeTag, comm_, &req[k]);
         }
-        for (std::size_t k = 0; k < n; ++k) {
-            req.emplace_back();
-            MPI_Isend(&out_size[k], 1, MPI_UINT64_T, neighbours_[k], kSizeTag, comm_, &req.back());
-        }
+        for (std::size_t k = 0; k < n; ++k)
+            MPI_Isend(&out_size[k], 1, MPI_UINT64_T, neighbours_[k], kSizeTag, comm_, &req[n + k]);
         MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE);
-        req.clear();
         counters_.messages += n;
         counters_.bytes += n * sizeof(std::uint64_t);
+        counters_.seconds += MPI_Wtime() - t0;
+        add_waited(MPI_Wtime() - t0);
+        for (std::size_t k = 0; k < n; ++k) got[k].resize(in_size[k]);
     }
-    std::vector<Bytes> got(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        got[k].resize(in_size[k]);
-        if (in_size[k] == 0) continue;
-        req.emplace_back();
-        MPI_Irecv(got[k].data(), int(in_size[k]), MPI_BYTE, neighbours_[k], kDataTag, comm_,
-                  &req.back());
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        if (send[k].empty()) continue;
-        req.emplace_back();
-        MPI_Isend(send[k].data(), int(send[k].size()), MPI_BYTE, neighbours_[k], kDataTag, comm_,
-                  &req.back());
-        ++counters_.messages;
-        counters_.bytes += send[k].size();
-    }
-    MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE);
-    ++counters_.exchanges;
-    counters_.seconds += MPI_Wtime() - t0;
-    add_waited(MPI_Wtime() - t0);
+    exchange_sized(send, got);
     return got;
 }
 
