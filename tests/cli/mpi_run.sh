@@ -63,11 +63,13 @@ close "$got" "$ref" 1e-3 || fail "one-rank checkpoint resumed on two ranks: $got
 echo "stop1 resumed on two ranks: final thickness $got (one rank $ref)"
 
 # A rank killed mid-run: the launch ends, the checkpoint of the start resumes to the end.
-"${mpi[@]}" "$drydem" run "$config" "${sets[@]}" --set output.checkpoint_every=600s -o "$work/killed" \
+# (the default 2.5 mg/cm2 film: about three times the steps, so it is still running when killed)
+"${mpi[@]}" "$drydem" run "$config" "${sets[@]}" --set output.checkpoint_every=600s \
+  --set film.areal_loading=2.5mg/cm^2 -o "$work/killed" \
   > "$work/killed.out" 2>&1 &
 launcher=$!
 victim=""
-for _ in $(seq 100); do
+for _ in $(seq 600); do
   sleep 0.1
   for p in $(pgrep -f "drydem run $config" || true); do
     tr '\0' '\n' < /proc/$p/environ 2>/dev/null | grep -qx OMPI_COMM_WORLD_RANK=1 && victim=$p
@@ -75,6 +77,7 @@ for _ in $(seq 100); do
   [[ -n $victim && -s $work/killed/checkpoint/state.bin ]] && break
 done
 [[ -n $victim ]] || fail "rank 1 not found"
+[[ -s $work/killed/checkpoint/state.bin ]] || fail "no checkpoint before the kill"
 sleep 0.3
 kill -9 "$victim"
 wait $launcher
