@@ -19,7 +19,9 @@
 #include "thin_film_case.hpp"
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <random>
+#include <string>
 #include <unordered_map>
 
 using namespace drydem;
@@ -29,8 +31,13 @@ namespace {
 using test::Case;
 using test::thin_film;
 
-EngineSettings film_settings(const Case& k, Integrator integrator, int ranks) {
+/// The decompositions the tests run: cut in x and y only, and in layers along z only.
+constexpr std::array<int, 3> kColumns{0, 0, 1}, kLayers{1, 1, 0};
+
+EngineSettings film_settings(const Case& k, Integrator integrator, int ranks,
+                             std::array<int, 3> grid = {0, 0, 0}) {
     EngineSettings es;
+    es.grid = grid;
     es.integrator = integrator;
     es.dt = 8e-12;
     es.skin = 0.01e-6; // a rebuild (and migration) every few steps
@@ -46,12 +53,13 @@ void sweep_level(const Case& k, Simulation& sim) {
     sim.set_liquid_level_schedule([level](double t) { return level.level(1e2 * t); });
 }
 
-Simulation make(const Case& k, Integrator integrator, int ranks) {
+Simulation make(const Case& k, Integrator integrator, int ranks,
+                std::array<int, 3> grid = {0, 0, 0}) {
     ParticleStore p =
         insert_particles(k.recipe, Box{k.c.box_x, k.c.box_y}, k.recipe.wet_film_height, 5);
     Simulation sim(std::move(p), Box{k.c.box_x, k.c.box_y},
                    make_drying_force_field(k.c, k.recipe, k.scaled),
-                   film_settings(k, integrator, ranks));
+                   film_settings(k, integrator, ranks, grid));
     sweep_level(k, sim);
     return sim;
 }
@@ -73,8 +81,9 @@ ForceField gas_forces() {
     return ff;
 }
 
-EngineSettings gas_settings(Integrator integrator, int ranks) {
+EngineSettings gas_settings(Integrator integrator, int ranks, std::array<int, 3> grid) {
     EngineSettings es;
+    es.grid = grid;
     es.integrator = integrator;
     es.dt = 2e-10;
     es.skin = 0.1e-6;
@@ -85,7 +94,7 @@ EngineSettings gas_settings(Integrator integrator, int ranks) {
 
 const Box gas_box{36e-6, 36e-6};
 
-Simulation gas(Integrator integrator, int ranks) {
+Simulation gas(Integrator integrator, int ranks, std::array<int, 3> grid = {0, 0, 0}) {
     ParticleStore p;
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -99,7 +108,7 @@ Simulation gas(Integrator integrator, int ranks) {
                 p.add(id++, large ? 0 : 1, large ? 1.5e-6 : 0.75e-6, 2000.0, x);
                 p.velocity.back() = {4.0 * u(rng), 4.0 * u(rng), 4.0 * u(rng)};
             }
-    return Simulation(std::move(p), gas_box, gas_forces(), gas_settings(integrator, ranks));
+    return Simulation(std::move(p), gas_box, gas_forces(), gas_settings(integrator, ranks, grid));
 }
 
 /// Runs both for `steps` and compares what this rank owns with the one-rank run.
@@ -145,18 +154,45 @@ void compare(Simulation& one, Simulation& many, int steps, bool expect_migration
     EXPECT_NEAR(e2.damping_rate, e1.damping_rate, 0.05 * e1.damping_rate);
 }
 
+/// The grid a decomposed engine runs, as "px x py x pz".
+std::string grid_of(const Simulation& sim) {
+    if (!sim.halo()) return "1 x 1 x 1";
+    const parallel::Decomposition& d = sim.halo()->decomposition();
+    return std::to_string(d.px) + " x " + std::to_string(d.py) + " x " + std::to_string(d.pz);
+}
+
+/// On one rank both grids are the undivided cell; on several, columns cut x or y and never z,
+/// layers cut z only.
+void expect_grid(const Simulation& sim, std::array<int, 3> grid) {
+    if (!sim.halo()) return;
+    const parallel::Decomposition& d = sim.halo()->decomposition();
+    if (grid == kColumns) {
+        EXPECT_EQ(d.pz, 1) << grid_of(sim);
+    } else {
+        EXPECT_EQ(d.px * d.py, 1) << grid_of(sim);
+    }
+}
+
 void compare_film(Integrator integrator, int steps) {
     const Case k = thin_film();
-    Simulation one = make(k, integrator, 1);
-    Simulation many = make(k, integrator, parallel::world().size);
-    compare(one, many, steps, false);
+    for (const auto grid : {kColumns, kLayers}) {
+        Simulation one = make(k, integrator, 1);
+        Simulation many = make(k, integrator, parallel::world().size, grid);
+        expect_grid(many, grid);
+        SCOPED_TRACE(grid_of(many));
+        compare(one, many, steps, false);
+    }
 }
 
 void compare_gas(Integrator integrator, int steps) {
-    Simulation one = gas(integrator, 1);
-    Simulation many = gas(integrator, parallel::world().size);
-    ASSERT_EQ(one.particles().size(), 288u);
-    compare(one, many, steps, true);
+    for (const auto grid : {kColumns, kLayers}) {
+        Simulation one = gas(integrator, 1);
+        Simulation many = gas(integrator, parallel::world().size, grid);
+        ASSERT_EQ(one.particles().size(), 288u);
+        expect_grid(many, grid);
+        SCOPED_TRACE(grid_of(many));
+        compare(one, many, steps, true);
+    }
 }
 
 } // namespace

@@ -2,12 +2,14 @@
 // The halo exchanges of the domain decomposition (parallel/halo.hpp), run by ctest under
 // `mpirun -np 1..4` (and alone). Every rank generates the same particles from one seed, so each
 // can check its own share against the whole: ownership after migration, the ghost set against a
-// brute-force search, and the ghosts' motion after an update.
+// brute-force search, and the ghosts' motion after an update. Each test runs on a thin film (cut
+// in x and y) and on a thick one (cut in z: an open axis, layers with one or two neighbours).
 #include "drydem/parallel/halo.hpp"
 #include "drydem/parallel/mpi_world.hpp"
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
@@ -19,10 +21,10 @@ namespace {
 
 const Box kBox{75e-6, 75e-6};
 
-/// The same film on every rank: CB-sized and NCM-sized spheres in a 30 um layer.
-ParticleStore film(std::size_t n, std::uint64_t seed) {
+/// The same film on every rank: CB-sized and NCM-sized spheres in a layer `thickness` thick.
+ParticleStore film(std::size_t n, std::uint64_t seed, double thickness) {
     std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> ux(0.0, kBox.lx), uy(0.0, kBox.ly), uz(0.0, 30e-6),
+    std::uniform_real_distribution<double> ux(0.0, kBox.lx), uy(0.0, kBox.ly), uz(0.0, thickness),
         u01(0.0, 1.0);
     ParticleStore p;
     for (std::size_t i = 0; i < n; ++i) {
@@ -38,7 +40,8 @@ ParticleStore film(std::size_t n, std::uint64_t seed) {
 /// A deterministic motion of particle `id` at `step` (every rank computes the same).
 Vec3 moved(const Vec3& x0, std::uint32_t id, int step) {
     const double a = 0.37 * id + step;
-    return {x0.x + 4e-6 * std::sin(a), x0.y + 4e-6 * std::cos(1.3 * a), x0.z};
+    return {x0.x + 4e-6 * std::sin(a), x0.y + 4e-6 * std::cos(1.3 * a),
+            x0.z + 4e-6 * std::sin(0.7 * a)};
 }
 
 /// What an extra per-particle array carries: something the engine keeps beside the store.
@@ -64,16 +67,20 @@ std::vector<std::uint32_t> all_ids(const ParticleStore& p, std::size_t owned) {
     return ids;
 }
 
-Halo make_halo(double reach) {
+parallel::Halo make_halo(double reach, double thickness) {
     const World w = world();
-    return Halo(decompose(kBox, w.size, reach), MPI_COMM_WORLD);
+    return parallel::Halo(decompose(kBox, w.size, reach, thickness), MPI_COMM_WORLD);
 }
+
+/// The film's thickness: 30 um is cut in x and y, 150 um in z (on 2 to 4 ranks).
+class HaloExchange : public ::testing::TestWithParam<double> {};
+INSTANTIATE_TEST_SUITE_P(Films, HaloExchange, ::testing::Values(30e-6, 150e-6));
 
 } // namespace
 
-TEST(Halo, MigrationKeepsEveryParticleOnceWithWhatTravelsWithIt) {
+TEST_P(HaloExchange, MigrationKeepsEveryParticleOnceWithWhatTravelsWithIt) {
     constexpr std::size_t n = 4000;
-    const ParticleStore whole = film(n, 17);
+    const ParticleStore whole = film(n, 17, GetParam());
     ParticleStore p = whole;
     std::vector<Kept> kept(n);
     std::vector<double> tag(n);
@@ -81,7 +88,7 @@ TEST(Halo, MigrationKeepsEveryParticleOnceWithWhatTravelsWithIt) {
         kept[i] = {whole.id[i], 0.25 * i};
         tag[i] = -double(i);
     }
-    Halo halo = make_halo(17e-6);
+    parallel::Halo halo = make_halo(17e-6, GetParam());
     halo.keep_owned(p, kept, tag);
     for (int step = 1; step <= 4; ++step) {
         for (std::size_t i = 0; i < p.size(); ++i) {
@@ -116,19 +123,19 @@ TEST(Halo, MigrationKeepsEveryParticleOnceWithWhatTravelsWithIt) {
     ASSERT_EQ(all.size(), n);
     for (std::size_t k = 0; k < n; ++k) {
         EXPECT_EQ(all.id[k], k);
-        EXPECT_EQ(all.position[k].z, whole.position[k].z);
+        EXPECT_EQ(all.position[k].z, moved(whole.position[k], std::uint32_t(k), 4).z);
         EXPECT_EQ(all.radius[k], whole.radius[k]);
     }
 }
 
-TEST(Halo, GhostsAreExactlyTheNeighboursParticlesWithinReach) {
+TEST_P(HaloExchange, GhostsAreExactlyTheNeighboursParticlesWithinReach) {
     constexpr std::size_t n = 3000;
-    const ParticleStore whole = film(n, 23);
+    const ParticleStore whole = film(n, 23, GetParam());
     // Reach of particle j: its radius, the largest radius, a range and the skin (the engine's
     // bound on how far a partner on another rank can be).
     auto reach_of = [&](std::size_t id) { return whole.radius[id] + 8e-6 + 1.1e-6; };
     ParticleStore p = whole;
-    Halo halo = make_halo(8e-6 + 8e-6 + 1.1e-6);
+    parallel::Halo halo = make_halo(8e-6 + 8e-6 + 1.1e-6, GetParam());
     halo.keep_owned(p);
     std::vector<double> reach(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) reach[i] = reach_of(p.id[i]);
@@ -167,11 +174,11 @@ TEST(Halo, GhostsAreExactlyTheNeighboursParticlesWithinReach) {
         }
 }
 
-TEST(Halo, UpdateGhostsCopiesTheOwnersMotion) {
+TEST_P(HaloExchange, UpdateGhostsCopiesTheOwnersMotion) {
     constexpr std::size_t n = 3000;
-    const ParticleStore whole = film(n, 31);
+    const ParticleStore whole = film(n, 31, GetParam());
     ParticleStore p = whole;
-    Halo halo = make_halo(17e-6);
+    parallel::Halo halo = make_halo(17e-6, GetParam());
     halo.keep_owned(p);
     std::vector<double> reach(p.size(), 12e-6);
     halo.make_ghosts(p, reach);
@@ -179,14 +186,15 @@ TEST(Halo, UpdateGhostsCopiesTheOwnersMotion) {
     for (int step = 1; step <= 3; ++step) {
         for (std::size_t i = 0; i < owned; ++i) {
             const std::uint32_t id = p.id[i];
-            p.position[i] = {whole.position[id].x, whole.position[id].y, 1e-7 * step};
+            p.position[i] = {whole.position[id].x, whole.position[id].y,
+                             whole.position[id].z + 1e-7 * step};
             p.velocity[i] = {double(id), double(step), 0.0};
             p.omega[i] = {0.0, 0.0, id + 0.5 * step};
         }
         halo.update_ghosts(p);
         for (std::size_t g = owned; g < p.size(); ++g) {
             const std::uint32_t id = p.id[g];
-            EXPECT_EQ(p.position[g].z, 1e-7 * step);
+            EXPECT_EQ(p.position[g].z, whole.position[id].z + 1e-7 * step);
             EXPECT_EQ(p.velocity[g].x, double(id));
             EXPECT_EQ(p.velocity[g].y, double(step));
             EXPECT_EQ(p.omega[g].z, id + 0.5 * step);
@@ -201,11 +209,11 @@ TEST(Halo, UpdateGhostsCopiesTheOwnersMotion) {
     }
 }
 
-TEST(Halo, GhostValuesAndItemsReachTheRightRanks) {
+TEST_P(HaloExchange, GhostValuesAndItemsReachTheRightRanks) {
     constexpr std::size_t n = 2000;
-    const ParticleStore whole = film(n, 41);
+    const ParticleStore whole = film(n, 41, GetParam());
     ParticleStore p = whole;
-    Halo halo = make_halo(17e-6);
+    parallel::Halo halo = make_halo(17e-6, GetParam());
     halo.keep_owned(p);
     std::vector<double> reach(p.size(), 10e-6);
     halo.make_ghosts(p, reach);
@@ -231,6 +239,42 @@ TEST(Halo, GhostValuesAndItemsReachTheRightRanks) {
             EXPECT_EQ(got[k][m].to, halo.rank());
             EXPECT_EQ(got[k][m].index, int(m));
         }
+    }
+}
+
+// The balancing moves the cuts until every rank owns an equal share of a lopsided film: denser
+// towards x = 0 (the thin film, cut in x) or towards the substrate (the thick one, cut in z).
+// The narrowest subdomain allowed is 5 um here, so that the shares are reachable on 4 ranks.
+TEST_P(HaloExchange, RebalancingEqualisesALopsidedFilm) {
+    constexpr std::size_t n = 4000;
+    ParticleStore p = film(n, 53, GetParam());
+    const bool thick = GetParam() > 100e-6;
+    for (Vec3& x : p.position) {
+        if (thick)
+            x.z = x.z * x.z / GetParam(); // half the particles below a quarter of the film
+        else
+            x.x = kBox.lx * std::pow(x.x / kBox.lx, 1.5);
+    }
+    parallel::Halo halo = make_halo(17e-6, GetParam());
+    halo.keep_owned(p);
+    const int ranks = world().size;
+    auto most = [&] { return halo.all_max(double(halo.owned())); };
+    const double share = double(n) / ranks;
+    if (ranks > 1) {
+        EXPECT_GT(most(), 1.2 * share) << "the film is not lopsided";
+    }
+    constexpr double min_width = 5e-6;
+    for (int round = 0; round < 12; ++round) {
+        halo.rebalance(p, std::vector<double>(halo.owned(), 0.0), min_width, 0.0);
+        halo.migrate(p);
+    }
+    EXPECT_LT(most(), 1.05 * share);
+    EXPECT_EQ(halo.all_sum(std::uint64_t(halo.owned())), n);
+    const Decomposition& d = halo.decomposition();
+    if (thick) {
+        for (int k = 1; k + 1 < d.pz; ++k) EXPECT_GE(d.cut_z[k + 1] - d.cut_z[k], min_width);
+    } else {
+        EXPECT_GE(d.width_x(), min_width);
     }
 }
 

@@ -13,32 +13,34 @@ using namespace drydem::parallel;
 namespace {
 const Box kBox{75e-6, 75e-6};
 constexpr double kReach = 12e-6;
+constexpr double kThin = 20e-6;   ///< a film thinner than two reaches: never cut in z
+constexpr double kThick = 130e-6; ///< the paper's wet film: 1.7 cells tall
 } // namespace
 
 TEST(Decomposition, PicksTheGridWithTheLeastGhostArea) {
-    EXPECT_EQ(decompose(kBox, 1, kReach).px, 1);
-    const auto d2 = decompose(kBox, 2, kReach);
+    EXPECT_EQ(decompose(kBox, 1, kReach, kThin).px, 1);
+    const auto d2 = decompose(kBox, 2, kReach, kThin);
     EXPECT_EQ(d2.px * d2.py, 2);
     EXPECT_EQ(d2.px, 2); // ties go to x
     // 4 ranks, reach 12 um: 4 x 1 holds 2 x 12 x 75 = 1800 um2 of ghosts per rank, 2 x 2
     // (37.5 + 24)^2 - 37.5^2 = 2376 um2 (its corners too).
-    const auto d4 = decompose(kBox, 4, kReach);
+    const auto d4 = decompose(kBox, 4, kReach, kThin);
     EXPECT_EQ(d4.px, 4);
     EXPECT_EQ(d4.py, 1);
     // With a reach of 20 um, 18.75 um wide strips are too narrow: 2 x 2.
-    const auto d4_wide = decompose(kBox, 4, 20e-6);
+    const auto d4_wide = decompose(kBox, 4, 20e-6, kThin);
     EXPECT_EQ(d4_wide.px, 2);
     EXPECT_EQ(d4_wide.py, 2);
     // 16 ranks: only 4 x 4 leaves subdomains 12 um wide.
-    const auto d16 = decompose(kBox, 16, kReach);
+    const auto d16 = decompose(kBox, 16, kReach, kThin);
     EXPECT_EQ(d16.px, 4);
     EXPECT_EQ(d16.py, 4);
     // A long cell is cut across its length.
-    const auto long_cell = decompose(Box{300e-6, 75e-6}, 4, kReach);
+    const auto long_cell = decompose(Box{300e-6, 75e-6}, 4, kReach, kThin);
     EXPECT_EQ(long_cell.px, 4);
     EXPECT_EQ(long_cell.py, 1);
     // 6 ranks: 6 x 1 (12.5 um strips: 1800 um2) before 3 x 2 (49 x 61.5 - 25 x 37.5 = 2076).
-    const auto d6 = decompose(kBox, 6, kReach);
+    const auto d6 = decompose(kBox, 6, kReach, kThin);
     EXPECT_EQ(d6.px, 6);
     EXPECT_EQ(d6.py, 1);
 }
@@ -46,7 +48,7 @@ TEST(Decomposition, PicksTheGridWithTheLeastGhostArea) {
 TEST(Decomposition, RefusesSubdomainsNarrowerThanTheReachNamingTheNumbers) {
     // 75 um / 12 um: at most 6 per direction. 7 ranks is a prime > 6: 7 x 1 leaves 10.7 um.
     try {
-        (void)decompose(kBox, 7, kReach);
+        (void)decompose(kBox, 7, kReach, kThin);
         FAIL() << "7 ranks accepted";
     } catch (const InputError& e) {
         const std::string what = e.what();
@@ -54,19 +56,65 @@ TEST(Decomposition, RefusesSubdomainsNarrowerThanTheReachNamingTheNumbers) {
         EXPECT_NE(what.find("12 um"), std::string::npos) << what;
         EXPECT_NE(what.find("at most 36 ranks"), std::string::npos) << what;
     }
-    EXPECT_NO_THROW((void)decompose(kBox, 36, kReach));
-    EXPECT_THROW((void)decompose(kBox, 49, kReach), InputError);
-    EXPECT_THROW((void)decompose(kBox, 0, kReach), InputError);
-    EXPECT_THROW((void)decompose(kBox, 2, NAN), InputError);
-    EXPECT_THROW((void)decompose(kBox, 2, -1.0), InputError);
+    EXPECT_NO_THROW((void)decompose(kBox, 36, kReach, kThin));
+    EXPECT_THROW((void)decompose(kBox, 49, kReach, kThin), InputError);
+    EXPECT_THROW((void)decompose(kBox, 0, kReach, kThin), InputError);
+    EXPECT_THROW((void)decompose(kBox, 2, NAN, kThin), InputError);
+    EXPECT_THROW((void)decompose(kBox, 2, -1.0, kThin), InputError);
+    EXPECT_THROW((void)decompose(kBox, 2, kReach, NAN), InputError);
+    EXPECT_THROW((void)decompose(kBox, 2, kReach, -1e-6), InputError);
+}
+
+// A film taller than the cell is wide is cut in layers: one cut in z of the 75 um cell under a
+// 130 um film holds 75 x 75 x 12 = 67,500 um3 of ghosts per rank, one cut in x (two faces,
+// periodic) 2 x 12 x 75 x 130 / 2 x 2 = 234,000 um3. A wide cell goes back to columns.
+TEST(Decomposition, ThickFilmsAreCutInLayers) {
+    const auto d2 = decompose(kBox, 2, kReach, kThick);
+    EXPECT_EQ(d2.px * d2.py, 1);
+    EXPECT_EQ(d2.pz, 2);
+    ASSERT_EQ(d2.cut_z.size(), 3u);
+    EXPECT_NEAR(d2.cut_z[1], 65e-6, 1e-18);
+    EXPECT_EQ(d2.z_lo(0), -INFINITY); // the lowest layer reaches through the substrate
+    EXPECT_EQ(d2.z_hi(1), INFINITY);  // the highest up without bound
+    // 4 ranks: 4 layers of 32.5 um (75^2 x 18 = 101,250 um3) before 2 x 1 x 2 (172,350) and
+    // 4 x 1 x 1 (234,000).
+    const auto d4 = decompose(kBox, 4, kReach, kThick);
+    EXPECT_EQ(d4.pz, 4);
+    // 300 um wide: 4 x 1 x 1 (936,000 um3) before 2 x 2 x 1 (1,010,880) and 1 x 1 x 4.
+    const auto wide = decompose(Box{300e-6, 300e-6}, 4, kReach, kThick);
+    EXPECT_EQ(wide.px, 4);
+    EXPECT_EQ(wide.pz, 1);
+    // Layers at least a reach thick: 130 / 12 allows 10.
+    EXPECT_NO_THROW((void)decompose(kBox, 10, kReach, kThick, {1, 1, 0}));
+    EXPECT_THROW((void)decompose(kBox, 11, kReach, kThick, {1, 1, 0}), InputError);
+}
+
+// A grid asked for is kept where it fits, refused with the request named where it does not.
+TEST(Decomposition, KeepsTheGridAskedFor) {
+    const auto columns = decompose(kBox, 2, kReach, kThick, {0, 0, 1});
+    EXPECT_EQ(columns.px, 2);
+    EXPECT_EQ(columns.pz, 1);
+    const auto rows = decompose(kBox, 2, kReach, kThick, {1, 0, 1});
+    EXPECT_EQ(rows.py, 2);
+    const auto mixed = decompose(kBox, 4, kReach, kThick, {2, 1, 2});
+    EXPECT_EQ(mixed.px, 2);
+    EXPECT_EQ(mixed.pz, 2);
+    try {
+        (void)decompose(kBox, 2, kReach, kThin, {1, 1, 2});
+        FAIL() << "two layers of a 20 um film accepted with a 12 um reach";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("1 x 1 x 2"), std::string::npos) << what;
+        EXPECT_NE(what.find("20 um thick"), std::string::npos) << what;
+    }
 }
 
 TEST(Decomposition, EveryPointHasOneOwnerWhoseSubdomainHoldsIt) {
-    const Decomposition d{kBox, 3, 2};
+    const Decomposition d{kBox, 3, 2, {}, {}, 2, {0.0, 50e-6, 130e-6}};
     std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> u(-1.5 * kBox.lx, 2.5 * kBox.lx);
+    std::uniform_real_distribution<double> u(-1.5 * kBox.lx, 2.5 * kBox.lx), uz(-5e-6, 200e-6);
     for (int k = 0; k < 2000; ++k) {
-        const Vec3 x{u(rng), u(rng), 1e-6};
+        const Vec3 x{u(rng), u(rng), uz(rng)};
         const int owner = d.owner(x);
         ASSERT_GE(owner, 0);
         ASSERT_LT(owner, d.ranks());
@@ -75,8 +123,29 @@ TEST(Decomposition, EveryPointHasOneOwnerWhoseSubdomainHoldsIt) {
         for (int r = 0; r < d.ranks(); ++r) inside += d.distance2(r, x) == 0.0 ? 1 : 0;
         EXPECT_EQ(inside, 1) << "x = " << x.x << ", " << x.y;
     }
-    // The upper edge belongs to the first subdomain again (periodic).
+    // The upper edge belongs to the first subdomain again (periodic); z is not periodic.
     EXPECT_EQ(d.owner(Vec3{kBox.lx, kBox.ly, 0.0}), 0);
+    EXPECT_EQ(d.owner(Vec3{1e-6, 1e-6, 50e-6}), 6); // the upper layer starts at its cut
+    EXPECT_EQ(d.owner(Vec3{1e-6, 1e-6, -1e-6}), 0);
+    EXPECT_EQ(d.owner(Vec3{1e-6, 1e-6, 1.0}), 6);
+}
+
+TEST(Decomposition, DistanceToALayerIsOpenAtTheEnds) {
+    const Decomposition d{kBox, 1, 1, {}, {}, 3, {0.0, 40e-6, 80e-6, 130e-6}};
+    EXPECT_NEAR(d.distance2(1, Vec3{10e-6, 10e-6, 100e-6}), 400e-12, 1e-24); // 20 um above
+    EXPECT_NEAR(d.distance2(1, Vec3{10e-6, 10e-6, 35e-6}), 25e-12, 1e-24);   // 5 um below
+    EXPECT_EQ(d.distance2(0, Vec3{10e-6, 10e-6, -5e-6}), 0.0);               // under the substrate
+    EXPECT_EQ(d.distance2(2, Vec3{10e-6, 10e-6, 500e-6}), 0.0);              // above the film
+    EXPECT_NEAR(d.distance2(2, Vec3{10e-6, 10e-6, 70e-6}), 100e-12, 1e-24);
+    EXPECT_NEAR(d.width_z(), 40e-6, 1e-18);
+    // Three layers: the middle one has both others as neighbours, the outer ones only it.
+    EXPECT_EQ(d.neighbors(0), std::vector<int>{1});
+    EXPECT_EQ(d.neighbors(1), (std::vector<int>{0, 2}));
+    EXPECT_EQ(d.neighbors(2), std::vector<int>{1});
+    // Columns on layers: 2 x 2 x 3, a middle subdomain sees 2 x 2 x 3 - 1 others.
+    const Decomposition g{kBox, 2, 2, {}, {}, 3, {0.0, 40e-6, 80e-6, 130e-6}};
+    EXPECT_EQ(g.neighbors(4).size(), 11u);
+    EXPECT_EQ(g.neighbors(0).size(), 7u);
 }
 
 TEST(Decomposition, PeriodicDistanceToASubdomainMatchesTheImages) {
@@ -127,7 +196,7 @@ TEST(Decomposition, NeighboursAreSymmetricUniqueAndNeverSelf) {
 
 // Moved cuts (the balancing): ownership and the distance to a subdomain follow them.
 TEST(Decomposition, OwnershipFollowsMovedCuts) {
-    Decomposition d = decompose(kBox, 2, kReach);
+    Decomposition d = decompose(kBox, 2, kReach, kThin);
     d.cut_x = {0.0, 50e-6, 75e-6};
     EXPECT_EQ(d.owner({45e-6, 10e-6, 1e-6}), 0);
     EXPECT_EQ(d.owner({55e-6, 10e-6, 1e-6}), 1);

@@ -175,6 +175,12 @@ void DryingRun::start() {
         "(stable < 2), level speeds {} m/s (scaled)",
         sim_.threads(), c_.integrator, sim_.settings().dt, largest_time_step(c_, film_.scaled),
         guard_.indicator(), fmt::join(film_.scaled.level_speeds_scaled, ", "));
+    if (const parallel::Halo* h = sim_.halo()) {
+        const parallel::Decomposition& d = h->decomposition();
+        log_->info("{} MPI ranks: {} x {} x {} subdomains (x, y, z layers; docs/parallel.md), "
+                   "rank 0 owns {} particles and holds {} ghosts",
+                   d.ranks(), d.px, d.py, d.pz, h->owned(), sim_.particles().size() - h->owned());
+    }
     const DerivedQuantities plan = derived_quantities(c_);
     const double estimate = estimated_wall_time(plan, sim_.threads());
     if (!resumed_ && estimate > wall_time_warning)

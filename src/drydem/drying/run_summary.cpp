@@ -116,7 +116,7 @@ void add_results(const RunContext& ctx, const RunEnd& e, json& s) {
 void add_decomposition(const parallel::Halo& h, const Simulation& sim, json& s) {
     const parallel::HaloCounters& n = h.counters();
     s["ranks"] = h.decomposition().ranks();
-    s["mpi"] = {{"grid", {h.decomposition().px, h.decomposition().py}},
+    s["mpi"] = {{"grid", {h.decomposition().px, h.decomposition().py, h.decomposition().pz}},
                 {"rank0_owned", sim.owned()},
                 {"rank0_ghosts", sim.particles().size() - sim.owned()},
                 {"rank0_messages", n.messages},

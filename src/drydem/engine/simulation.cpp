@@ -99,13 +99,14 @@ void Simulation::decompose() {
         throw InputError(fmt::format("the engine was asked for {} MPI ranks; MPI runs {}",
                                      settings_.ranks, w.size));
     // Every rank holds the whole set here: the widest reach needs no reduction.
-    double r_max = 0.0, range_max = 0.0;
+    double r_max = 0.0, range_max = 0.0, top = 0.0;
     for (std::size_t i = 0; i < p_.size(); ++i) {
         r_max = std::max(r_max, p_.radius[i]);
         range_max = std::max(range_max, owner_range_bound(i));
+        top = std::max(top, p_.position[i].z);
     }
     const double reach = 2.0 * r_max + range_max + settings_.skin;
-    halo_.emplace(parallel::decompose(box_, w.size, reach), MPI_COMM_WORLD);
+    halo_.emplace(parallel::decompose(box_, w.size, reach, top, settings_.grid), MPI_COMM_WORLD);
     if (!accel_.empty())
         halo_->keep_owned(p_, body_state_, accel_, alpha_); // a resumed semi-implicit state
     else

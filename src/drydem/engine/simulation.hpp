@@ -9,6 +9,7 @@
 #include "drydem/forces/force_field.hpp"
 #include "drydem/neighbor/neighbor_list.hpp"
 #include "drydem/parallel/halo.hpp"
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -34,9 +35,11 @@ struct EngineSettings {
     double initial_liquid_level = 1.0e30; ///< z_L at t = 0 [m] (far above: no capillary force)
     Integrator integrator = Integrator::explicit_verlet;
     QuasiStaticSettings quasi_static{}; ///< the quasi-static step's accuracy and solver
-    /// MPI ranks of a domain decomposition in x and y (docs/parallel.md): 1 = none, else the
-    /// size of MPI_COMM_WORLD. Explicit and semi-implicit integrators only, without bonds.
+    /// MPI ranks of a domain decomposition (docs/parallel.md): 1 = none, else the size of
+    /// MPI_COMM_WORLD. Explicit and semi-implicit integrators only, without bonds.
     int ranks = 1;
+    /// Subdomains along x, y and z; 0 = whichever gives the fewest ghosts (parallel::decompose).
+    std::array<int, 3> grid{0, 0, 0};
 };
 
 /// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).

@@ -43,8 +43,8 @@ Halo::Halo(Decomposition d, MPI_Comm comm) : d_(d), comm_(comm) {
     MPI_Comm_size(comm_, &size);
     if (size != d_.ranks())
         throw InputError(fmt::format("parallel::Halo: {} ranks run a decomposition into {} x {} "
-                                     "subdomains",
-                                     size, d_.px, d_.py));
+                                     "x {} subdomains",
+                                     size, d_.px, d_.py, d_.pz));
     neighbours_ = d_.neighbors(rank_);
 }
 
@@ -56,12 +56,12 @@ int Halo::slot_of(int rank) const {
 void Halo::throw_not_neighbour(const ParticleStore& p, std::size_t i, int owner) const {
     throw RunError(
         fmt::format(
-            "particle {} at ({:.4g}, {:.4g}) um moved from the subdomain of rank {} into that of "
-            "rank {}, which is not a neighbour: it travelled more than a subdomain ({:.4g} x "
-            "{:.4g} "
-            "um) between two neighbour-list rebuilds. Likely cause: a blow-up (see the time step)",
-            p.id[i], p.position[i].x * 1e6, p.position[i].y * 1e6, rank_, owner, d_.width_x() * 1e6,
-            d_.width_y() * 1e6),
+            "particle {} at ({:.4g}, {:.4g}, {:.4g}) um moved from the subdomain of rank {} into "
+            "that of rank {}, which is not a neighbour: it travelled more than a subdomain ({:.4g} "
+            "x {:.4g} x {:.4g} um) between two neighbour-list rebuilds. Likely cause: a blow-up "
+            "(see the time step)",
+            p.id[i], p.position[i].x * 1e6, p.position[i].y * 1e6, p.position[i].z * 1e6, rank_,
+            owner, d_.width_x() * 1e6, d_.width_y() * 1e6, d_.width_z() * 1e6),
         "blow_up");
 }
 
@@ -108,15 +108,26 @@ void Halo::rebalance(const ParticleStore& p, const std::vector<double>& pairs, d
     // The modelled work of this rank, to turn its measured time into a time per unit of work.
     double mean_local = 0.0;
     for (std::size_t i = 0; i < owned_; ++i) mean_local += pairs[i];
-    const double shift = 0.25 * std::min(d_.width_x(), d_.width_y());
-    auto balance = [&](int parts, double length, auto coordinate, std::vector<double>& cuts) {
-        if (parts < 2) return;
+    const double shift = 0.25 * std::min({d_.width_x(), d_.width_y(), d_.width_z()});
+    // Along z (open) the bins span the film, from the substrate to its highest centre.
+    double top = 0.0;
+    if (d_.pz > 1) {
+        for (std::size_t i = 0; i < owned_; ++i) top = std::max(top, p.position[i].z);
+        top = all_max(top);
+    }
+    auto balance = [&](int parts, double length, bool periodic, auto coordinate,
+                       std::vector<double>& cuts) {
+        if (parts < 2 || !(length >= parts * min_width)) return;
         // Two histograms in one reduction: pair incidences, then particle counts.
         std::vector<double> h(2 * kBins, 0.0), all(2 * kBins, 0.0);
         for (std::size_t i = 0; i < owned_; ++i) {
-            double u = std::fmod(coordinate(p.position[i]), length);
-            if (u < 0.0) u += length;
-            const auto b = std::min(kBins - 1, std::size_t(u / length * double(kBins)));
+            double u = coordinate(p.position[i]);
+            if (periodic) {
+                u = std::fmod(u, length);
+                if (u < 0.0) u += length;
+            }
+            const auto b =
+                std::min(kBins - 1, std::size_t(std::max(0.0, u / length * double(kBins))));
             h[b] += pairs[i];
             h[kBins + b] += 1.0;
         }
@@ -143,12 +154,19 @@ void Halo::rebalance(const ParticleStore& p, const std::vector<double>& pairs, d
         std::vector<double> now = cuts;
         if (now.empty())
             for (int k = 0; k <= parts; ++k) now.push_back(length * k / parts);
+        // An open axis: the film's extent now, the inner cuts inside it.
+        now.front() = 0.0;
+        now.back() = length;
+        for (int k = 1; k < parts; ++k)
+            now[std::size_t(k)] = std::clamp(now[std::size_t(k)], 0.0, length);
         cuts = balanced_cuts(work, length, now, min_width, shift);
     };
     balance(
-        d_.px, d_.box.lx, [](const Vec3& x) { return x.x; }, d_.cut_x);
+        d_.px, d_.box.lx, true, [](const Vec3& x) { return x.x; }, d_.cut_x);
     balance(
-        d_.py, d_.box.ly, [](const Vec3& x) { return x.y; }, d_.cut_y);
+        d_.py, d_.box.ly, true, [](const Vec3& x) { return x.y; }, d_.cut_y);
+    balance(
+        d_.pz, top, false, [](const Vec3& x) { return x.z; }, d_.cut_z);
 }
 
 void Halo::update_ghosts(ParticleStore& p) {
