@@ -490,6 +490,9 @@ int run_command(CommandLine& a) {
     // Never two runs in one folder, never a new run over an old one's files (old frames would
     // mix with the new); a resumed run continues its own folder as it is. Several ranks: rank 0
     // holds the folder, and its refusal stops them all.
+    // A rank count the film cannot be cut into is refused before the folder exists (a film read
+    // from --particles or a checkpoint is decomposed as it is, by the engine).
+    if (!o.resume && a.particles.empty()) check_rank_count(c, parallel::world().size);
     std::optional<OutputLock> lock;
     agree_on_rank0([&] {
         lock.emplace(o.output_dir);

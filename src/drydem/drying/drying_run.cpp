@@ -78,6 +78,20 @@ private:
     std::int32_t threads_before_ = 0; ///< threads of the sessions before this one
 };
 
+/// The engine's settings for the film's run on `ranks` MPI ranks.
+EngineSettings engine_settings(const Config& c, const Film& film, int ranks) {
+    EngineSettings es;
+    es.integrator = integrator_of(c);
+    es.dt = largest_time_step(c, film.scaled);
+    es.quasi_static = quasi_static_settings(c, film.scaled);
+    es.skin = c.neighbor_skin();
+    es.threads = c.threads;
+    es.sort_every = c.sort_every;
+    es.overlap_limit = c.overlap_limit;
+    es.ranks = ranks;
+    return es;
+}
+
 DryingRun::DryingRun(const Config& c, const RunOptions& opt)
     : c_(c), opt_(opt),
       resumed_(opt.resume ? std::optional<RunCheckpoint>(read_run_checkpoint(opt.output_dir))
@@ -120,15 +134,7 @@ Simulation DryingRun::make_simulation() {
                "{:.4g} um, seed {}",
                DRYDEM_VERSION, DRYDEM_GIT_HASH, c_.name, film_.n_ncm, film_.n_cb, c_.box_x * 1e6,
                c_.box_y * 1e6, film_.recipe.wet_film_height * 1e6, c_.seed);
-    EngineSettings es;
-    es.integrator = integrator_of(c_);
-    es.dt = largest_time_step(c_, film_.scaled);
-    es.quasi_static = quasi_static_settings(c_, film_.scaled);
-    es.skin = c_.neighbor_skin();
-    es.threads = c_.threads;
-    es.sort_every = c_.sort_every;
-    es.overlap_limit = c_.overlap_limit;
-    es.ranks = world_.size;
+    EngineSettings es = engine_settings(c_, film_, world_.size);
     // The level is known before the first force evaluation: forces (and contact histories) are
     // computed once at t = 0.
     es.initial_liquid_level = film_.schedule.level(0.0);
@@ -311,6 +317,22 @@ DryingResult DryingRun::dry() {
 }
 
 } // namespace
+
+void check_rank_count(const Config& c, int ranks) {
+    if (ranks < 2) return;
+    const Film film = describe_film(c);
+    const ForceField forces = make_drying_force_field(c, film.recipe, film.scaled);
+    // The largest sphere of each class bounds what its particles reach; the wet film's height
+    // bounds their centres.
+    double r_max = 0.0, range_max = 0.0;
+    for (std::size_t s = 0; s < film.recipe.species.size(); ++s) {
+        const double r = 0.5 * film.recipe.species[s].diameter;
+        r_max = std::max(r_max, r);
+        range_max = std::max(range_max, owner_range_bound(forces, int(s), r));
+    }
+    (void)plan_decomposition(film.box, r_max, range_max, film.recipe.wet_film_height,
+                             engine_settings(c, film, ranks));
+}
 
 Config resume_config(const std::filesystem::path& output_dir) {
     RunCheckpoint ck = read_run_checkpoint(output_dir);

@@ -44,6 +44,11 @@ struct DryingResult {
 /// result with completed = false after writing what it has (exit code 1).
 DryingResult run_drying(const Config& config, const RunOptions& options);
 
+/// Refuses (InputError, with the numbers) a rank count whose subdomains the inserted film of `c`
+/// would not fill at least one reach wide, or what does not run on several ranks: before a run
+/// on `ranks` MPI ranks makes its output folder (docs/parallel.md). Nothing on one rank.
+void check_rank_count(const Config& c, int ranks);
+
 /// The resolved config stored in the checkpoint of the run in `output_dir` (InputError if there is
 /// no valid checkpoint). run.threads is the thread count the run used, so that the resumed run
 /// continues bit for bit; override it only knowingly.

@@ -81,19 +81,30 @@ void Simulation::allocate_integrator() {
     alpha_.assign(n, {});
 }
 
-double Simulation::owner_range_bound(std::size_t i) const {
+double owner_range_bound(const ForceField& forces, int species, double radius) {
     // Upper bound of the range an owner can have: partners are never larger than the owner.
     double r = 0.0;
-    const int si = p_.species[i];
-    for (int sj = 0; sj < ff_.species_count; ++sj)
-        r = std::max(r, interaction_range(ff_.pair_params(si, sj), p_.radius[i], p_.radius[i]));
+    for (int sj = 0; sj < forces.species_count; ++sj)
+        r = std::max(r, interaction_range(forces.pair_params(species, sj), radius, radius));
     return r;
 }
 
-void Simulation::decompose() {
-    if (quasi_static())
+parallel::Decomposition plan_decomposition(const Box& box, double r_max, double range_max,
+                                           double height, const EngineSettings& settings) {
+    // A ghost must be seen as far as a partner's surface reaches: its radius, the largest
+    // partner's, that partner's range and the skin (docs/parallel.md "The reach").
+    if (settings.integrator == Integrator::quasi_static)
         throw InputError("numerics.integrator = \"quasi_static\" does not run on several MPI "
                          "ranks yet (docs/parallel.md); use \"semi_implicit\" or \"explicit\"");
+    const double reach = 2.0 * r_max + range_max + settings.skin;
+    return parallel::decompose(box, settings.ranks, reach, height, settings.grid);
+}
+
+double Simulation::owner_range_bound(std::size_t i) const {
+    return drydem::owner_range_bound(ff_, p_.species[i], p_.radius[i]);
+}
+
+void Simulation::decompose() {
     const parallel::World w = parallel::world();
     if (w.size != settings_.ranks)
         throw InputError(fmt::format("the engine was asked for {} MPI ranks; MPI runs {}",
@@ -103,10 +114,9 @@ void Simulation::decompose() {
     for (std::size_t i = 0; i < p_.size(); ++i) {
         r_max = std::max(r_max, p_.radius[i]);
         range_max = std::max(range_max, owner_range_bound(i));
-        top = std::max(top, p_.position[i].z);
+        top = std::max(top, p_.position[i].z + p_.radius[i]);
     }
-    const double reach = 2.0 * r_max + range_max + settings_.skin;
-    halo_.emplace(parallel::decompose(box_, w.size, reach, top, settings_.grid), MPI_COMM_WORLD);
+    halo_.emplace(plan_decomposition(box_, r_max, range_max, top, settings_), MPI_COMM_WORLD);
     if (!accel_.empty())
         halo_->keep_owned(p_, body_state_, accel_, alpha_); // a resumed semi-implicit state
     else

@@ -77,6 +77,18 @@ struct EngineState {
     std::uint64_t rebuilds_since_sort = 0;
 };
 
+/// How far beyond its surface a sphere of `species` and `radius` interacts with any partner no
+/// larger than itself (the neighbour list's owner bound).
+[[nodiscard]] double owner_range_bound(const ForceField& forces, int species, double radius);
+
+/// The decomposition `settings.ranks` MPI ranks make of a film on `box` whose spheres are at most
+/// `r_max` large, interact at most `range_max` beyond their surfaces (owner_range_bound) and reach
+/// no higher than `height` (docs/parallel.md "The reach"): what the engine builds, and what
+/// a run checks before it makes its output folder. InputError when no grid fits.
+[[nodiscard]] parallel::Decomposition plan_decomposition(const Box& box, double r_max,
+                                                         double range_max, double height,
+                                                         const EngineSettings& settings);
+
 class Simulation {
 public:
     Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings);

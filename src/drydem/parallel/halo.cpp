@@ -199,22 +199,24 @@ void Halo::update_ghosts(ParticleStore& p) {
 }
 
 void Halo::update_ghost_values(std::vector<double>& v, std::size_t per_particle) {
-    const std::size_t row = per_particle * sizeof(double);
-    std::vector<Bytes> send(neighbours_.size());
-    std::vector<std::size_t> expected(neighbours_.size());
-    for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-        send[k].resize(ghost_send_[k].size() * row);
-        std::byte* out = send[k].data();
+    // Every power iteration of the guard: the buffers are kept, as update_ghosts' are.
+    const std::size_t row = per_particle * sizeof(double), n = neighbours_.size();
+    values_out_.resize(n);
+    values_in_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        values_out_[k].resize(ghost_send_[k].size() * row);
+        values_in_[k].resize(ghost_count_[k] * row);
+        std::byte* out = values_out_[k].data();
         for (std::uint32_t i : ghost_send_[k]) {
             std::memcpy(out, v.data() + std::size_t(i) * per_particle, row);
             out += row;
         }
-        expected[k] = ghost_count_[k] * row;
     }
-    const std::vector<Bytes> got = exchange(send, &expected);
-    for (std::size_t k = 0; k < got.size(); ++k)
-        if (!got[k].empty())
-            std::memcpy(v.data() + ghost_begin_[k] * per_particle, got[k].data(), got[k].size());
+    exchange_sized(values_out_, values_in_);
+    for (std::size_t k = 0; k < n; ++k)
+        if (!values_in_[k].empty())
+            std::memcpy(v.data() + ghost_begin_[k] * per_particle, values_in_[k].data(),
+                        values_in_[k].size());
 }
 
 ParticleStore Halo::gather(const ParticleStore& p) const {

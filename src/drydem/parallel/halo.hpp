@@ -176,6 +176,7 @@ private:
     std::vector<std::vector<std::uint32_t>> ghost_send_;
     std::vector<std::size_t> ghost_begin_, ghost_count_;
     std::vector<Bytes> motion_out_, motion_in_; ///< update_ghosts' buffers, kept between steps
+    std::vector<Bytes> values_out_, values_in_; ///< the same for update_ghost_values (doubles)
     HaloCounters counters_;
 };
 
