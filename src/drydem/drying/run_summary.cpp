@@ -112,9 +112,17 @@ void add_results(const RunContext& ctx, const RunEnd& e, json& s) {
     s["box_um"] = {ctx.config.box_x * 1e6, ctx.config.box_y * 1e6};
 }
 
-/// A decomposed run: its grid and rank 0's share and traffic (docs/parallel.md "Scaling").
-void add_decomposition(const parallel::Halo& h, const Simulation& sim, json& s) {
+/// A decomposed run: its grid, rank 0's share and traffic, and every rank's share and waits
+/// (docs/parallel.md "Scaling"): the rank that waited least set the pace.
+void add_decomposition(const parallel::Halo& h, const Simulation& sim, const WholeFilm& whole,
+                       json& s) {
     const parallel::HaloCounters& n = h.counters();
+    json owned = json::array(), ghosts = json::array(), waited = json::array();
+    for (const RankLoad& l : whole.rank_loads()) {
+        owned.push_back(l.owned);
+        ghosts.push_back(l.ghosts);
+        waited.push_back(l.waited_s);
+    }
     s["ranks"] = h.decomposition().ranks();
     s["mpi"] = {{"grid", {h.decomposition().px, h.decomposition().py, h.decomposition().pz}},
                 {"rank0_owned", sim.owned()},
@@ -123,7 +131,10 @@ void add_decomposition(const parallel::Halo& h, const Simulation& sim, json& s) 
                 {"rank0_bytes", n.bytes},
                 {"rank0_exchange_s", n.seconds},
                 {"rank0_migrated", n.migrated},
-                {"rank0_exchanges", n.exchanges}};
+                {"rank0_exchanges", n.exchanges},
+                {"owned", owned},
+                {"ghosts", ghosts},
+                {"waited_s", waited}};
 }
 
 /// The summary's record of how the run was made: scaling, level, integration, cost, build.
@@ -161,7 +172,7 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
     s["resumed"] = ctx.options.resume;
     s["threads"] = sim.threads();
     s["ranks"] = 1;
-    if (const parallel::Halo* h = sim.halo()) add_decomposition(*h, sim, s);
+    if (const parallel::Halo* h = sim.halo()) add_decomposition(*h, sim, e.whole, s);
     s["version"] = fmt::format("{} ({})", DRYDEM_VERSION, DRYDEM_GIT_HASH);
     s["wall_time_s"] = e.result.wall_time;
     s["particle_steps_per_s"] =

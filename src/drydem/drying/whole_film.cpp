@@ -53,6 +53,16 @@ EngineState WholeFilm::state() const {
     return sim_.state();
 }
 
+RankLoad WholeFilm::own_load() const {
+    return {sim_.owned(), sim_.particles().size() - sim_.owned(), parallel::waited_seconds()};
+}
+
+std::vector<RankLoad> WholeFilm::rank_loads() const {
+    if (!decomposed_) return {own_load()};
+    ask(kRankLoads);
+    return sim_.halo()->gather_items(std::vector<RankLoad>{own_load()});
+}
+
 void WholeFilm::release() const { ask(kRelease); }
 
 void WholeFilm::fail(const std::string& why) const {
@@ -81,6 +91,9 @@ void WholeFilm::serve() const {
             break;
         case kOverlaps:
             (void)sim_.halo()->gather_items(sim_.relative_overlaps());
+            break;
+        case kRankLoads:
+            (void)sim_.halo()->gather_items(std::vector<RankLoad>{own_load()});
             break;
         case kFail:
             throw RunError(parallel::broadcast(std::string()), "output_failed");

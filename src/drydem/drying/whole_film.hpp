@@ -13,6 +13,13 @@
 
 namespace drydem {
 
+/// One rank's share of a decomposed film and its time waiting on the others (its imbalance).
+struct RankLoad {
+    std::uint64_t owned = 0, ghosts = 0;
+    double waited_s =
+        0.0; ///< wall seconds inside MPI calls since the launch (parallel::waited_seconds)
+};
+
 class WholeFilm {
 public:
     explicit WholeFilm(const Simulation& sim);
@@ -33,6 +40,8 @@ public:
     [[nodiscard]] double overlap_p99() const;
     /// The engine state for a checkpoint (Simulation::state).
     [[nodiscard]] EngineState state() const;
+    /// Every rank's load, in rank order (one entry on one rank).
+    [[nodiscard]] std::vector<RankLoad> rank_loads() const;
     /// The film's particle count.
     [[nodiscard]] std::size_t size() const { return size_; }
 
@@ -52,8 +61,10 @@ private:
         kState = 3,
         kFail = 4,
         kKineticEnergy = 5,
-        kOverlaps = 6
+        kOverlaps = 6,
+        kRankLoads = 7
     };
+    [[nodiscard]] RankLoad own_load() const;
     void ask(Request r) const;
 
     const Simulation& sim_;
