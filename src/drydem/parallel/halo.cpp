@@ -45,6 +45,9 @@ Halo::Halo(Decomposition d, MPI_Comm comm) : d_(d), comm_(comm) {
         throw InputError(fmt::format("parallel::Halo: {} ranks run a decomposition into {} x {} "
                                      "x {} subdomains",
                                      size, d_.px, d_.py, d_.pz));
+    if (d_.pz > 1 && d_.cut_z.size() != std::size_t(d_.pz) + 1)
+        throw InputError(fmt::format("parallel::Halo: {} layers need {} cuts along z, not {}",
+                                     d_.pz, d_.pz + 1, d_.cut_z.size()));
     neighbours_ = d_.neighbors(rank_);
 }
 
