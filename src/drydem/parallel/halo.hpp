@@ -6,7 +6,7 @@
 // cell's wrapped coordinates, so the engine's minimum image finds every pair across a subdomain
 // face, the periodic ones included, with one copy per ghost.
 //
-// Three exchanges, all with the (up to eight) neighbouring ranks only:
+// Three exchanges, all with the (up to 26) neighbouring ranks only:
 //   migrate        at a neighbour-list rebuild: an owned particle whose centre left the subdomain
 //                  goes to its new owner with everything the engine keeps for it;
 //   make_ghosts    after migrate: the ghost copies, and the lists that update_ghosts reuses;
