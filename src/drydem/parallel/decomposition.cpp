@@ -28,8 +28,10 @@ int Decomposition::rank_at(int ix, int iy, int iz) const {
 double Decomposition::z_lo(int iz) const { return iz <= 0 ? -INFINITY : cut_z.at(std::size_t(iz)); }
 
 namespace {
-/// The part of a periodic axis cut at `cuts` (empty: `parts` equal ones) that holds u in [0, l).
+/// The part of an axis cut at `cuts` (empty: `parts` equal ones over [0, l)) that holds u; below
+/// the first inner cut the lowest, above the last the highest (so z's layers are open at the ends).
 int part_of(double u, const std::vector<double>& cuts, int parts, double l) {
+    if (parts < 2) return 0;
     if (cuts.empty()) return std::clamp(int(u / (l / parts)), 0, parts - 1);
     const auto it = std::upper_bound(cuts.begin() + 1, cuts.end() - 1, u);
     return int(it - cuts.begin()) - 1;
@@ -48,20 +50,11 @@ double Decomposition::width_z() const {
     return pz < 2 ? INFINITY : narrowest(cut_z, pz, cut_z.back());
 }
 
-namespace {
-/// The layer that holds height z: below the first inner cut the lowest, above the last the highest.
-int layer_of(double z, const std::vector<double>& cuts, int parts) {
-    if (parts < 2) return 0;
-    const auto it = std::upper_bound(cuts.begin() + 1, cuts.end() - 1, z);
-    return int(it - cuts.begin()) - 1;
-}
-} // namespace
-
 int Decomposition::owner(const Vec3& x) const {
     Vec3 w = x;
     box.wrap(w);
     return rank_at(part_of(w.x, cut_x, px, box.lx), part_of(w.y, cut_y, py, box.ly),
-                   layer_of(w.z, cut_z, pz));
+                   part_of(w.z, cut_z, pz, cut_z.empty() ? 0.0 : cut_z.back()));
 }
 
 std::vector<int> Decomposition::neighbors(int rank) const {
