@@ -7,8 +7,11 @@
 # includes reading the checkpoint and writing the stop's checkpoint, not the MPI start-up.
 #   strong  the paper's 20.1 mg/cm2 film, 75 x 75 um (47,044 particles): MODES
 #   weak    the same recipe on 75 x 150 um (2x the area) under 2 ranks x 1 thread, against
-#           strong's 1 x 1 (4x the area needs 4 cores: not on this machine)
-# usage: bench/mpi_scaling.sh [strong] [weak]
+#           strong's 1 x 1: one rank's share of the film is the 75 um film
+#   weak4   150 x 150 um (4x the area) under 2 ranks x 1 thread, against 75 x 150 um on 1 x 1:
+#           one rank's share is twice the 75 um film (4 ranks on 4x the area need 4 cores, which
+#           this machine does not have)
+# usage: bench/mpi_scaling.sh [strong] [weak] [weak4]
 # environment: MODES ("1x1 2x1 1x2": ranks x threads), BASE (5000), STEPS (1500), REPEAT (2),
 #   OUT (results/mpi_scaling), DRYDEM (build/drydem)
 # Prints a table; each timing's summary.json (with rank 0's halo counters, "mpi") stays in OUT.
@@ -61,7 +64,13 @@ for case in $cases; do
             timed strong 1 1 "$r"
             timed wide 2 1 "$r"
           done ;;
-    *) echo "unknown case $case (strong, weak)" >&2; exit 2 ;;
+    weak4) base_run wide --set film.box_y=150um
+           base_run square --set film.box_x=150um --set film.box_y=150um
+           for r in $(seq "$repeat"); do
+             timed wide 1 1 "$r"
+             timed square 2 1 "$r"
+           done ;;
+    *) echo "unknown case $case (strong, weak, weak4)" >&2; exit 2 ;;
   esac
 done
 
@@ -97,4 +106,10 @@ for (name, ranks, threads), r in sorted(best.items()):
     rel = f"{r['ps'] / ref['ps']:.2f}x" if ref else "-"
     print(f"{name:<7} {ranks:>5} {threads:>7} {r['n']:>9} {r['t']:>8.1f} {r['ps']:>10.3g} {rel:>7} "
           f"{ghosts:>12} {hs:>11} {kb:>12}")
+# weak scaling: the same share per rank, so the efficiency is the one-rank wall time over the
+# two-rank wall time of the film twice as large
+for small, large in (("strong", "wide"), ("wide", "square")):
+    one, two = best.get((small, 1, 1)), best.get((large, 2, 1))
+    if one and two:
+        print(f"weak scaling {small} 1x1 -> {large} 2x1: efficiency {one['t'] / two['t']:.2f}")
 PY
