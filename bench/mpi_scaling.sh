@@ -26,6 +26,9 @@ repeat=${REPEAT:-2}
 cases=${*:-strong}
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=${OMPI_MCA_btl:-self,vader}
+# the films of the weak cases: 2x and 4x the 75 x 75 um cell's area
+wide=(--set film.box_y=150um)
+square=(--set film.box_x=150um --set film.box_y=150um)
 common=(--set analysis.at_end=false --set output.snapshot_every=0s --set output.checkpoint_every=0s)
 
 base_run() { # name, extra args...
@@ -59,13 +62,13 @@ for case in $cases; do
               for m in $modes; do timed strong "${m%x*}" "${m#*x}" "$r"; done
             done ;;
     weak) base_run strong
-          base_run wide --set film.box_y=150um
+          base_run wide "${wide[@]}"
           for r in $(seq "$repeat"); do
             timed strong 1 1 "$r"
             timed wide 2 1 "$r"
           done ;;
-    weak4) base_run wide --set film.box_y=150um
-           base_run square --set film.box_x=150um --set film.box_y=150um
+    weak4) base_run wide "${wide[@]}"
+           base_run square "${square[@]}"
            for r in $(seq "$repeat"); do
              timed wide 1 1 "$r"
              timed square 2 1 "$r"
