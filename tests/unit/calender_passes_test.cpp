@@ -50,6 +50,17 @@ TEST(CalenderPasses, SpringbackGrowingWithDepthClosesInFromAbove) {
     EXPECT_LE(done.size(), 3u);
 }
 
+TEST(CalenderPasses, TheSecantNeverPressesDeeperThanTheShift) {
+    // The virgin first pass springs back less (0.018) than the re-presses after it (0.030, the
+    // end-to-end test's film): the secant's slope 0.37 would aim ~0.02 below the target, the
+    // shift (springback unchanged) at it. The shallower wins; a film cannot be un-pressed.
+    const std::vector<CalenderPass> done{pass(0.50, 0.5182), pass(0.4818, 0.5115)};
+    const double shift = 0.4818 - (0.5115 - 0.50);
+    EXPECT_NEAR(next_peak_porosity(done, 0.50), shift, 1e-15);
+    auto unloaded = [](double peak) { return peak + 0.030; }; // springback of a re-press
+    EXPECT_GE(unloaded(next_peak_porosity(done, 0.50)), 0.50 - 1e-12);
+}
+
 TEST(CalenderPasses, ASlopeOutOfRangeFallsBackToTheShift) {
     // The second pass barely moved the film (slope 0.1): no secant, the shift rule.
     const double next = next_peak_porosity({pass(0.30, 0.360), pass(0.28, 0.358)}, 0.32);

@@ -353,6 +353,7 @@ std::unique_ptr<Simulation> CalenderRun::make_simulation(ParticleStore particles
     es.threads = c_.threads;
     es.sort_every = c_.sort_every;
     es.overlap_limit = c_.overlap_limit;
+    es.guard_warm_start = true; // a calendering run never resumes; its list is rebuilt often
     return std::make_unique<Simulation>(std::move(particles), film_.box,
                                         make_calendering_force_field(c_, film_.recipe), es);
 }

@@ -40,6 +40,11 @@ struct EngineSettings {
     int ranks = 1;
     /// Subdomains along x, y and z; 0 = whichever gives the fewest ghosts (parallel::decompose).
     std::array<int, 3> grid{0, 0, 0};
+    /// The stability estimate's power iteration starts from the last estimate's vector (carried
+    /// by particle id, with a random part) instead of a fresh random one: far fewer iterations
+    /// where it runs every few dozen steps (calendering, whose extrusion rebuilds the list). The
+    /// vector is not in the checkpoint, so a run that resumes must leave it off.
+    bool guard_warm_start = false;
 };
 
 /// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).
@@ -333,6 +338,8 @@ private:
     std::vector<SelfBlock> block_;
     std::vector<Vec3> accel_, alpha_;
     mutable std::vector<double> guard_vector_[2]; ///< the estimate's work vectors, reused
+    /// guard_warm_start: the last estimate's vectors by particle id (6 entries each; NaN: none)
+    mutable std::vector<double> guard_by_id_[2];
     // What a pair-loop thread writes for partners outside its own rows (see pair_loop): a fixed
     // reduction order makes results identical run to run for a given thread count. Allocated
     // only with more than one thread.

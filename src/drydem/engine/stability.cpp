@@ -24,6 +24,7 @@
 #include <omp.h>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace drydem {
@@ -148,23 +149,65 @@ GuardOperators assemble_operators(const GuardInputs& in) {
     return op;
 }
 
+/// The power iteration's start: random, seeded by the step, so that the estimate follows from
+/// the engine state alone and a resumed run is bit-identical. With `warm` (the last estimate's
+/// vector by particle id) a particle that had an entry starts from it plus a tenth of the random
+/// vector (both normalised in the mass norm, where rotations weigh their inertia): the limiting
+/// mode moves little between two estimates a few dozen steps apart, and the random part keeps a
+/// stiffer mode elsewhere in reach.
+void start_vector(const GuardInputs& in, std::uint64_t step, const std::vector<double>* warm,
+                  std::vector<double>& x) {
+    const ParticleStore& p = in.p;
+    std::mt19937_64 rng(0x5eed ^ step);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    x.resize(6 * p.size());
+    for (double& v : x) v = u(rng);
+    if (warm == nullptr || warm->empty()) return;
+    const auto entry = [&](std::size_t i) -> const double* {
+        const std::size_t at = 6 * std::size_t(p.id[i]);
+        return at + 6 <= warm->size() && !std::isnan((*warm)[at]) ? &(*warm)[at] : nullptr;
+    };
+    const auto norm2 = [&](std::size_t i, const double* v) {
+        return p.mass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+               (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]) / p.inv_inertia[i];
+    };
+    double warm2 = 0.0, random2 = 0.0;
+    for (std::size_t i = 0; i < in.owned; ++i) {
+        random2 += norm2(i, &x[6 * i]);
+        if (const double* w = entry(i)) warm2 += norm2(i, w);
+    }
+    if (in.halo) warm2 = in.halo->all_sum(warm2), random2 = in.halo->all_sum(random2);
+    if (!(warm2 > 0.0) || !(random2 > 0.0)) return;
+    const double a = 1.0 / std::sqrt(warm2), b = 0.1 / std::sqrt(random2);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double* w = entry(i);
+        for (int k = 0; k < 6; ++k) x[6 * i + k] = (w ? a * w[k] : 0.0) + b * x[6 * i + k];
+    }
+}
+
+/// Keeps the owned rows of the last iterate x by particle id, for the next warm start.
+void keep_by_id(const ParticleStore& p, std::size_t owned, const std::vector<double>& x,
+                std::vector<double>& by_id) {
+    std::uint32_t top = 0;
+    for (std::size_t i = 0; i < owned; ++i) top = std::max(top, p.id[i]);
+    by_id.assign(6 * (std::size_t(top) + 1), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i = 0; i < owned; ++i)
+        std::copy_n(x.begin() + std::ptrdiff_t(6 * i), 6,
+                    by_id.begin() + std::ptrdiff_t(6 * std::size_t(p.id[i])));
+}
+
 /// λ_max of M_eff⁻¹ A by power iteration (Rayleigh quotient in the M_eff norm, M_eff = M + s D)
-/// from a random start seeded by the step; x keeps the last iterate (for the peak particle).
+/// from start_vector; x keeps the last iterate (for the peak particle).
 double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
                     const std::vector<SelfBlock>& blocks, double s, std::uint64_t step,
-                    std::vector<double>& x, int& iterations) {
+                    std::vector<double>& x, std::vector<double>* warm, int& iterations) {
     const ParticleStore& p = in.p;
     const std::size_t n = p.size(), threads = in.threads;
     const bool semi = in.semi;
     std::vector<double> y(6 * n), partial;
     std::vector<std::vector<double>> y_share;
     const RowSplit rows = in.rows();
-    std::mt19937_64 rng(0x5eed ^ step);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    // A fresh random start (seeded by the step) every call, never the last call's vector: the
-    // estimate must follow from the engine state alone, so that a resumed run is bit-identical.
-    x.resize(6 * n);
-    for (double& v : x) v = u(rng);
+    start_vector(in, step, warm, x);
     // Under a decomposition the sums run over owned rows only, then over the ranks; a ghost's
     // entries follow its owner's after every update (the products read them).
     auto all_sum = [&](double v) { return in.halo ? in.halo->all_sum(v) : v; };
@@ -210,6 +253,7 @@ double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
         if (in.halo) in.halo->update_ghost_values(x, 6);
     }
     iterations += it;
+    if (warm != nullptr) keep_by_id(p, in.owned, x, *warm);
     return lambda;
 }
 
@@ -246,11 +290,13 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
                          halo_ ? &*halo_ : nullptr};
     const GuardOperators op = assemble_operators(in);
     const std::uint64_t step = std::uint64_t(step_);
+    const bool warm = settings_.guard_warm_start;
     if (!semi)
-        out.damping_rate =
-            largest_rate(in, op.damping, op.blocks, 0.0, step, guard_vector_[0], out.iterations);
-    const double omega2 = largest_rate(in, op.stiffness, op.blocks, semi ? settings_.dt : 0.0, step,
-                                       guard_vector_[1], out.iterations);
+        out.damping_rate = largest_rate(in, op.damping, op.blocks, 0.0, step, guard_vector_[0],
+                                        warm ? &guard_by_id_[0] : nullptr, out.iterations);
+    const double omega2 =
+        largest_rate(in, op.stiffness, op.blocks, semi ? settings_.dt : 0.0, step, guard_vector_[1],
+                     warm ? &guard_by_id_[1] : nullptr, out.iterations);
     out.stiffness_rate = std::sqrt(std::max(omega2, 0.0));
     const bool damping_limits = !semi && out.damping_rate * 2.0 > out.stiffness_rate;
     out.particle_id = peak_particle(in, damping_limits ? guard_vector_[0] : guard_vector_[1]);
