@@ -160,61 +160,81 @@ std::vector<std::int32_t> Simulation::coordination() const {
 
 template <class PairFn, class WallFn>
 void Simulation::visit_contact_forces(PairFn&& pair, WallFn&& wall) const {
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-        if (nl_.owners() == p_.size())
-            for (std::uint32_t k = nl_.begin(i); k < nl_.end(i); ++k) {
-                const std::uint32_t j = nl_.partner(k);
-                const Vec3 d = box_.minimum_image(p_.position[i], p_.position[j]);
-                const double dist2 = norm2(d);
-                if (dist2 >= nl_.reach2(k) || dist2 == 0.0) continue;
-                const PairGeometry g = make_pair_geometry(
-                    d, std::sqrt(dist2), p_.radius[i], p_.radius[j], p_.mass[i], p_.mass[j],
-                    p_.velocity[i], p_.velocity[j], p_.omega[i], p_.omega[j]);
-                PairState kept = nl_.state(k);
-                pair(i, j,
-                     pair_interaction(g, ff_.pair_params(p_.species[i], p_.species[j]), kept, 0.0)
-                         .force_i,
-                     d);
-            }
-        // The walls: their contact point lies on the plane, straight below or above the centre.
-        const BodyGeometry g = body_geometry(i, p_.velocity[i], p_.omega[i], 0.0);
-        const BodyParams& bp = ff_.body_params(p_.species[i]);
-        BodyState kept = body_state_[i];
-        BodyForce sub{}, plate{};
-        SubstrateContactLaw::add_force(g, law<SubstrateContactLaw>(bp),
-                                       BodyLaws::state<SubstrateContactLaw>(kept), 0.0, sub,
-                                       nullptr);
-        PlateContactLaw::add_force(g, law<PlateContactLaw>(bp),
-                                   BodyLaws::state<PlateContactLaw>(kept), 0.0, plate, nullptr);
-        wall(i, sub.force, Vec3{0.0, 0.0, -p_.position[i].z});
-        if (std::isfinite(plate_height_))
-            wall(i, plate.force, Vec3{0.0, 0.0, plate_height_ - p_.position[i].z});
+    // Thread t visits the rows of row_split and its share of the bonds; what it adds goes to its
+    // own accumulator (the callbacks' first argument), summed by the caller in thread order, so
+    // the result is the same run to run for a given thread count.
+    const std::size_t threads = std::size_t(threads_), n = p_.size(), nb = bonds_.bonds.size();
+#pragma omp parallel for schedule(static, 1) num_threads(threads_)
+    for (std::size_t t = 0; t < threads; ++t) {
+        for (std::size_t i = row_split(t, threads); i < row_split(t + 1, threads); ++i) {
+            if (nl_.owners() == n)
+                for (std::uint32_t k = nl_.begin(i); k < nl_.end(i); ++k) {
+                    const std::uint32_t j = nl_.partner(k);
+                    const Vec3 d = box_.minimum_image(p_.position[i], p_.position[j]);
+                    const double dist2 = norm2(d);
+                    if (dist2 >= nl_.reach2(k) || dist2 == 0.0) continue;
+                    const PairGeometry g = make_pair_geometry(
+                        d, std::sqrt(dist2), p_.radius[i], p_.radius[j], p_.mass[i], p_.mass[j],
+                        p_.velocity[i], p_.velocity[j], p_.omega[i], p_.omega[j]);
+                    PairState kept = nl_.state(k);
+                    pair(t, i, j,
+                         pair_interaction(g, ff_.pair_params(p_.species[i], p_.species[j]), kept,
+                                          0.0)
+                             .force_i,
+                         d);
+                }
+            // The walls: their contact point lies on the plane, straight below or above the
+            // centre.
+            const BodyGeometry g = body_geometry(i, p_.velocity[i], p_.omega[i], 0.0);
+            const BodyParams& bp = ff_.body_params(p_.species[i]);
+            BodyState kept = body_state_[i];
+            BodyForce sub{}, plate{};
+            SubstrateContactLaw::add_force(g, law<SubstrateContactLaw>(bp),
+                                           BodyLaws::state<SubstrateContactLaw>(kept), 0.0, sub,
+                                           nullptr);
+            PlateContactLaw::add_force(g, law<PlateContactLaw>(bp),
+                                       BodyLaws::state<PlateContactLaw>(kept), 0.0, plate, nullptr);
+            wall(t, i, sub.force, Vec3{0.0, 0.0, -p_.position[i].z});
+            if (std::isfinite(plate_height_))
+                wall(t, i, plate.force, Vec3{0.0, 0.0, plate_height_ - p_.position[i].z});
+        }
+        for (std::size_t k = nb * t / threads; k < nb * (t + 1) / threads; ++k)
+            if (const Bond& b = bonds_.bonds[k]; b.state.intact())
+                pair(t, std::size_t(b.i), std::size_t(b.j), bond_force(b).force_i,
+                     box_.minimum_image(p_.position[b.i], p_.position[b.j]));
     }
-    for (const Bond& b : bonds_.bonds)
-        if (b.state.intact())
-            pair(std::size_t(b.i), std::size_t(b.j), bond_force(b).force_i,
-                 box_.minimum_image(p_.position[b.i], p_.position[b.j]));
 }
 
 Sym3 Simulation::contact_stress(double volume) const {
-    Sym3 s;
-    auto add = [&s](const Vec3& f, const Vec3& d) { // -= f ⊗ d, symmetrised
+    std::vector<Sym3> part(static_cast<std::size_t>(threads_));       // per thread, summed in order
+    auto add = [&part](std::size_t t, const Vec3& f, const Vec3& d) { // -= f ⊗ d, symmetrised
+        Sym3& s = part[t];
         s.xx -= f.x * d.x, s.yy -= f.y * d.y, s.zz -= f.z * d.z;
         s.xy -= 0.5 * (f.x * d.y + f.y * d.x);
         s.xz -= 0.5 * (f.x * d.z + f.z * d.x);
         s.yz -= 0.5 * (f.y * d.z + f.z * d.y);
     };
-    visit_contact_forces([&](std::size_t, std::size_t, const Vec3& f, const Vec3& d) { add(f, d); },
-                         [&](std::size_t, const Vec3& f, const Vec3& lever) { add(f, lever); });
+    visit_contact_forces(
+        [&](std::size_t t, std::size_t, std::size_t, const Vec3& f, const Vec3& d) {
+            add(t, f, d);
+        },
+        [&](std::size_t t, std::size_t, const Vec3& f, const Vec3& lever) { add(t, f, lever); });
+    Sym3 s;
+    for (const Sym3& q : part)
+        s.xx += q.xx, s.yy += q.yy, s.zz += q.zz, s.xy += q.xy, s.xz += q.xz, s.yz += q.yz;
     const double inv = 1.0 / volume;
     s.xx *= inv, s.yy *= inv, s.zz *= inv, s.xy *= inv, s.xz *= inv, s.yz *= inv;
     return s;
 }
 
 std::vector<double> Simulation::particle_mean_stress() const {
-    std::vector<double> t(p_.size(), 0.0); // -Σ f · (x_c - x), then / 3V
+    // -Σ f · (x_c - x), then / 3V; one array per thread (a pair adds to both of its particles),
+    // summed in thread order.
+    std::vector<std::vector<double>> part(std::size_t(threads_),
+                                          std::vector<double>(p_.size(), 0.0));
     visit_contact_forces(
-        [&](std::size_t i, std::size_t j, const Vec3& f, const Vec3& d) {
+        [&](std::size_t th, std::size_t i, std::size_t j, const Vec3& f, const Vec3& d) {
+            std::vector<double>& t = part[th];
             const double dist = norm(d), ri = p_.radius[i], rj = p_.radius[j];
             // The contact plane of two overlapping spheres (their intersection circle), a_i
             // from i's centre; for a gap, the same formula splits it by the radii.
@@ -224,7 +244,12 @@ std::vector<double> Simulation::particle_mean_stress() const {
             t[i] -= fn * ai;
             t[j] -= fn * (dist - ai); // j feels -f, its lever is -(dist - a_i) n
         },
-        [&](std::size_t i, const Vec3& f, const Vec3& lever) { t[i] -= dot(f, lever); });
+        [&](std::size_t th, std::size_t i, const Vec3& f, const Vec3& lever) {
+            part[th][i] -= dot(f, lever);
+        });
+    std::vector<double> t = std::move(part[0]);
+    for (std::size_t k = 1; k < part.size(); ++k)
+        for (std::size_t i = 0; i < t.size(); ++i) t[i] += part[k][i];
     for (std::size_t i = 0; i < p_.size(); ++i) t[i] /= 3.0 * sphere_volume(p_.radius[i]);
     return t;
 }

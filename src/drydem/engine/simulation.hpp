@@ -245,9 +245,10 @@ public:
     void compute_forces();
 
 private:
-    /// Calls pair(i, j, f_i, x_j - x_i) for each listed pair and intact bond with the force on i
-    /// at the present state (nothing advanced), and wall(i, f, x_c - x_i) for the substrate and
-    /// the plate.
+    /// Calls pair(t, i, j, f_i, x_j - x_i) for each listed pair and intact bond with the force on
+    /// i at the present state (nothing advanced), and wall(t, i, f, x_c - x_i) for the substrate
+    /// and the plate, on the engine's threads: t is the calling thread, whose accumulator the
+    /// callback adds to (each thread its own, summed in thread order by the caller).
     template <class PairFn, class WallFn>
     void visit_contact_forces(PairFn&& pair, WallFn&& wall) const;
     void rebuild_neighbors();
