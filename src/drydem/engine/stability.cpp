@@ -40,6 +40,11 @@ double quadratic(const SelfBlock& d, const Vec3& v, const Vec3& w) {
     return va + wb + 2.0 * dot(w, cross(d.k, v)); // w^T [k]× v appears twice
 }
 
+/// |(v, w)|² in the inertia norm: translations weigh the mass, rotations the moment of inertia.
+double inertia_norm2(const ParticleStore& p, std::size_t i, const Vec3& v, const Vec3& w) {
+    return p.mass[i] * norm2(v) + norm2(w) / p.inv_inertia[i];
+}
+
 /// The guard's operators: per thread, the damping R (explicit only; at the skin-reduced gaps)
 /// and the stiffness K entries of its rows; the semi-implicit self-blocks D at the current gaps.
 struct GuardOperators {
@@ -167,14 +172,13 @@ void start_vector(const GuardInputs& in, std::uint64_t step, const std::vector<d
         const std::size_t at = 6 * std::size_t(p.id[i]);
         return at + 6 <= warm->size() && !std::isnan((*warm)[at]) ? &(*warm)[at] : nullptr;
     };
-    const auto norm2 = [&](std::size_t i, const double* v) {
-        return p.mass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
-               (v[3] * v[3] + v[4] * v[4] + v[5] * v[5]) / p.inv_inertia[i];
+    const auto norm2_of = [&](std::size_t i, const double* v) {
+        return inertia_norm2(p, i, {v[0], v[1], v[2]}, {v[3], v[4], v[5]});
     };
     double warm2 = 0.0, random2 = 0.0;
     for (std::size_t i = 0; i < in.owned; ++i) {
-        random2 += norm2(i, &x[6 * i]);
-        if (const double* w = entry(i)) warm2 += norm2(i, w);
+        random2 += norm2_of(i, &x[6 * i]);
+        if (const double* w = entry(i)) warm2 += norm2_of(i, w);
     }
     if (in.halo) warm2 = in.halo->all_sum(warm2), random2 = in.halo->all_sum(random2);
     if (!(warm2 > 0.0) || !(random2 > 0.0)) return;
@@ -218,7 +222,7 @@ double largest_rate(const GuardInputs& in, const std::vector<Operator>& a,
         const Vec3 v{x[6 * i], x[6 * i + 1], x[6 * i + 2]};
         const Vec3 w{x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]};
         if (i >= in.owned) return 0.0;
-        return p.mass[i] * norm2(v) + norm2(w) / p.inv_inertia[i] + s * quadratic(block(i), v, w);
+        return inertia_norm2(p, i, v, w) + s * quadratic(block(i), v, w);
     };
     double lambda = 0.0;
     int it = 0;
