@@ -11,6 +11,7 @@ import json
 import math
 import os
 import re
+import statistics
 import sys
 
 QUANTITIES = [('peak', 'peak porosity'), ('unloaded', 'unloaded porosity'),
@@ -39,10 +40,7 @@ def runs(folder):
 
 
 def mean_sd(values):
-    n = len(values)
-    m = sum(values) / n
-    sd = math.sqrt(sum((v - m) ** 2 for v in values) / (n - 1)) if n > 1 else float('nan')
-    return m, sd
+    return statistics.fmean(values), (statistics.stdev(values) if len(values) > 1 else math.nan)
 
 
 def main(folder):
