@@ -14,6 +14,9 @@
 #               Stokes knob at fixed f: b = 33.3 (k = 3e5, k b = 1e7) and b = 316 (k = 2.85e6,
 #               k b = 9e8); with q_base (k b = 9e7) two decades of the Stokes number
 #   q_ecb400    CB Young's modulus 400 GPa instead of 142, at e = 24 (p99 overlap 0.2 %; against q_e24)
+#   q_e24_s16   the CB spheres' inertia x 16 (scaling.cb_density_scaling; CB Stokes number 0.19
+#               against the largest NCM's 0.36) at e = 24: against q_e24, whether the CB's inertia
+#               is out of the answer, which would make the step ~4x longer for free
 #   q_dt_half   run.time_step at half of q_base's mean step
 #   q_qs        the quasi-static step (numerics.integrator, docs/model.md M-9.1) at the process's
 #               own settings, k = b = e = 1 (against q_e24: the Stokes number and the overlap
@@ -63,6 +66,7 @@ for step in "$@"; do
     q_b33) study q_b33 $fr --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
     q_b316) study q_b316 $fr --set scaling.time_factor=2.846e6 --set scaling.viscosity_reduction=316.23 ;;
     q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa --set scaling.stiffness_factor=24 ;;
+    q_e24_s16) study q_e24_s16 $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=16 ;;
     q_dt_half) study q_dt_half $fr --set "run.time_step=${DT_HALF:?set DT_HALF to half the mean step of q_base}" ;;
     q_qs) study q_qs $fr "${qs[@]}" ;;
     q_qs_tol3) study q_qs_tol3 $fr "${qs[@]}" --set numerics.solver_tolerance=1e-3 ;;

@@ -34,6 +34,7 @@ SERIES = {
                                                            ("q_base", 75), ("q_e240", 240)]),
     "Stokes knob: k b at f = k/b = 9e3": ("q_base", [("q_b33", 1e7), ("q_base", 9e7), ("q_b316", 9e8)]),
     "CB Young's modulus (GPa), at e = 24": ("q_e24", [("q_e24", 142), ("q_ecb400", 400)]),
+    "CB density scaling S (scaling.cb_density_scaling), at e = 24": ("q_e24", [("q_e24", 1), ("q_e24_s16", 16)]),
     "time step": ("q_base", [("q_base", 1.0), ("q_dt_half", 0.5)]),
     # The quasi-static step (issue 30) at the process's own settings (k = b = e = 1): against the
     # explicit reference at e = 24 (the Stokes number of the largest NCM, zone 2, is the knob that
@@ -43,8 +44,8 @@ SERIES = {
     "solver tolerance of the quasi-static step": ("q_qs", [("q_qs", 1e-4), ("q_qs_tol3", 1e-3)]),
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
-STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_dt_half",
-         "q_qs", "q_qs_tol3", "q_qs_d75"]
+STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s16",
+         "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
 def leaves_level(run_dir: Path, after_s: float):
@@ -77,7 +78,9 @@ def yardstick(r):
         "push": zone2["push_number"], "wall": r["wall_time_s"], "steps": r["steps"],
         "dt": r["time_step_mean_s"], "k": r["scaling"]["time_factor_k"], "b": r["scaling"]["viscosity_reduction_b"],
         "e": r["scaling"].get("stiffness_factor_e", 1.0), "scheme": r["scaling"].get("scheme", "paper") + (
-            " (quasi-static)" if r.get("integrator") == "quasi_static" else ""),
+            " (quasi-static)" if r.get("integrator") == "quasi_static" else "") + (
+            f", CB inertia × {r['scaling']['cb_density_scaling']:g}"
+            if r["scaling"].get("cb_density_scaling", 1.0) != 1.0 else ""),
     }
 
 

@@ -138,3 +138,23 @@ TEST(GuardClusters, ExplicitBoundExceedsThePerPairEstimate) {
         std::max(lub.normal, 3.5 * lub.sliding) * (p.inv_mass[1] + p.inv_mass[0]);
     EXPECT_GT(sim.stability_estimate().damping_rate, 1.8 * per_pair);
 }
+
+// Density scaling of the CB (scaling.cb_density_scaling S): on the all-CB fcc cluster every mass
+// is × S and K is unchanged, so the guard's stiffness rate falls by exactly √S and the reference
+// clusters' step may grow; where an NCM takes part, by less.
+TEST(GuardClusters, CbDensityScalingLowersTheAllCbClustersStiffnessRateBySqrtS) {
+    Config c = drying_config("explicit");
+    const FilmRecipe r = make_recipe(c);
+    const auto plain = guard_on_reference_clusters(c, r, "explicit");
+    c.drying_cb_density_scaling = 16;
+    const auto scaled = guard_on_reference_clusters(c, r, "explicit");
+    ASSERT_EQ(plain.size(), scaled.size());
+    ASSERT_EQ(plain[2].name, "fcc cluster of 13 CB");
+    const double ratio = scaled[2].estimate.stiffness_rate / plain[2].estimate.stiffness_rate;
+    EXPECT_NEAR(ratio, 0.25, 0.01);
+    for (std::size_t k = 0; k < plain.size(); ++k) {
+        EXPECT_LT(scaled[k].estimate.stiffness_rate, plain[k].estimate.stiffness_rate)
+            << plain[k].name;
+        EXPECT_GE(scaled[k].dt, plain[k].dt) << plain[k].name;
+    }
+}

@@ -83,4 +83,23 @@ TEST(DimensionlessGroups, ForceRatioKeepsEveryForceRatio) {
     }
 }
 
+// Density scaling of the CB raises the CB's Stokes number × S, as simulated only, and nothing else.
+TEST(DimensionlessGroups, CbDensityScalingRaisesOnlyTheCbStokesNumber) {
+    Config c;
+    c.scaling_scheme = "force_ratio";
+    c.time_factor = 9e5;
+    c.viscosity_reduction = 100;
+    const DimensionlessGroups d1 = dimensionless_groups(c);
+    c.drying_cb_density_scaling = 16;
+    const DimensionlessGroups d16 = dimensionless_groups(c);
+    for (std::size_t z = 0; z < 2; ++z) {
+        expect_rel(d16.simulated[z].stokes_cb, 16.0 * d1.simulated[z].stokes_cb, 1e-12);
+        EXPECT_EQ(d16.physical[z].stokes_cb, d1.physical[z].stokes_cb);
+        EXPECT_EQ(d16.simulated[z].stokes_ncm, d1.simulated[z].stokes_ncm);
+        EXPECT_EQ(d16.simulated[z].inertial, d1.simulated[z].inertial);
+        EXPECT_EQ(d16.simulated[z].bond_ncm, d1.simulated[z].bond_ncm);
+        EXPECT_EQ(d16.simulated[z].capillary_drag, d1.simulated[z].capillary_drag);
+    }
+}
+
 } // namespace

@@ -143,6 +143,29 @@ TEST(Scaling, ForceRatioScheme) {
     expect_rel(law<HertzMindlinLaw>(ff.pair_params(cb, cb)).e_star, 142e9 * 20 / (2 * (1 - 0.09)));
 }
 
+// Density scaling of the CB (scaling.cb_density_scaling): the CB spheres' mass and moment of
+// inertia × S, their density (what gravity and buoyancy read) and every NCM sphere untouched.
+TEST(Scaling, CbDensityScalingScalesOnlyTheCbInertia) {
+    Config c;
+    c.drying_cb_density_scaling = 16;
+    const ScaledParameters s = scale_parameters(c);
+    expect_rel(s.cb_density_scaling, 16.0);
+    EXPECT_EQ(scale_parameters(Config{}).cb_density_scaling, 1.0);
+    const FilmRecipe r = make_recipe(c);
+    const auto cb = std::uint8_t(r.cb_species());
+    ParticleStore p;
+    p.add(1, 0, 3e-6, 4740.0, {0, 0, 5e-6});
+    p.add(2, cb, 0.75e-6, 1187.5, {0, 0, 1e-5});
+    const ParticleStore before = p;
+    scale_cb_inertia(p, r, s);
+    expect_rel(p.mass[1], 16.0 * before.mass[1]);
+    expect_rel(p.inv_mass[1], before.inv_mass[1] / 16.0);
+    expect_rel(p.inv_inertia[1], before.inv_inertia[1] / 16.0);
+    EXPECT_EQ(p.density[1], before.density[1]);
+    EXPECT_EQ(p.mass[0], before.mass[0]);
+    EXPECT_EQ(p.inv_inertia[0], before.inv_inertia[0]);
+}
+
 // The paper scheme's zeros mean its own factors: capillary 9e3, Hamaker = k (Sec. 4.1).
 TEST(Scaling, PaperSchemeDefaultFactors) {
     Config c;

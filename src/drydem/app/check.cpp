@@ -183,6 +183,35 @@ void print_calendering(const Config& c, const FilmRecipe& r) {
 
 } // namespace
 
+/// The scheme's factors and every scaled value (M-7), physical -> as simulated.
+void print_scaling(const ScaledParameters& s, const ForceField& ff) {
+    fmt::print(
+        "Scaling (M-7): scheme \"{}\", k = {:g}, b = {:g}, capillary x {:g}, Hamaker x {:g}, "
+        "Young's moduli x {:g}\n",
+        s.scheme, s.time_factor, s.viscosity_reduction, s.capillary_factor, s.hamaker_factor,
+        s.stiffness_factor);
+    if (s.cb_density_scaling != 1.0)
+        fmt::print("  CB inertia                mass and moment of inertia x {:g} "
+                   "(scaling.cb_density_scaling; gravity and buoyancy physical)\n",
+                   s.cb_density_scaling);
+    fmt::print("  gravity                   {:g} -> {:g} m/s2\n", s.gravity_physical,
+               s.gravity_scaled);
+    fmt::print("  Stokes viscosity          {:g} -> {:g} Pa s\n", s.drag_viscosity_physical,
+               s.drag_viscosity_scaled);
+    fmt::print("  lubrication viscosity     {:g} Pa s\n", s.lubrication_viscosity);
+    fmt::print("  Hamaker CB-CB/NCM-CB/NCM-NCM  {:g} / {:g} / {:g} -> {:g} / {:g} / {:g} J\n",
+               s.hamaker_cb_cb[0], s.hamaker_ncm_cb[0], s.hamaker_ncm_ncm[0], s.hamaker_cb_cb[1],
+               s.hamaker_ncm_cb[1], s.hamaker_ncm_ncm[1]);
+    fmt::print("  surface tension x factor  {:g} -> {:g} N/m (capillary stiffness {:.4g} N/m)\n",
+               s.surface_tension_physical, s.surface_tension_scaled,
+               capillary_stiffness(law<CapillaryFrontLaw>(ff.body_params(0))));
+    fmt::print("  dryer zone duration       {:g} s -> {:g} s\n", s.zone_duration_physical,
+               s.zone_duration_scaled);
+    for (std::size_t z = 0; z < s.level_speeds_scaled.size(); ++z)
+        fmt::print("  zone {} shrinkage rate     {:g} um/s -> level speed {:g} m/s\n", z + 1,
+                   s.shrinkage_rates_physical[z] * 1e6, s.level_speeds_scaled[z]);
+}
+
 void print_check(const Config& c) {
     const FilmRecipe r = make_recipe(c);
     const ScaledParameters s = scale_parameters(c);
@@ -207,27 +236,7 @@ void print_check(const Config& c) {
                    sc.count_exact, sc.density * 1e-3);
     fmt::print("  particles                 {}\n\n", r.particle_count());
 
-    fmt::print(
-        "Scaling (M-7): scheme \"{}\", k = {:g}, b = {:g}, capillary x {:g}, Hamaker x {:g}, "
-        "Young's moduli x {:g}\n",
-        s.scheme, s.time_factor, s.viscosity_reduction, s.capillary_factor, s.hamaker_factor,
-        s.stiffness_factor);
-    fmt::print("  gravity                   {:g} -> {:g} m/s2\n", s.gravity_physical,
-               s.gravity_scaled);
-    fmt::print("  Stokes viscosity          {:g} -> {:g} Pa s\n", s.drag_viscosity_physical,
-               s.drag_viscosity_scaled);
-    fmt::print("  lubrication viscosity     {:g} Pa s\n", s.lubrication_viscosity);
-    fmt::print("  Hamaker CB-CB/NCM-CB/NCM-NCM  {:g} / {:g} / {:g} -> {:g} / {:g} / {:g} J\n",
-               s.hamaker_cb_cb[0], s.hamaker_ncm_cb[0], s.hamaker_ncm_ncm[0], s.hamaker_cb_cb[1],
-               s.hamaker_ncm_cb[1], s.hamaker_ncm_ncm[1]);
-    fmt::print("  surface tension x factor  {:g} -> {:g} N/m (capillary stiffness {:.4g} N/m)\n",
-               s.surface_tension_physical, s.surface_tension_scaled,
-               capillary_stiffness(law<CapillaryFrontLaw>(ff.body_params(0))));
-    fmt::print("  dryer zone duration       {:g} s -> {:g} s\n", s.zone_duration_physical,
-               s.zone_duration_scaled);
-    for (std::size_t z = 0; z < s.level_speeds_scaled.size(); ++z)
-        fmt::print("  zone {} shrinkage rate     {:g} um/s -> level speed {:g} m/s\n", z + 1,
-                   s.shrinkage_rates_physical[z] * 1e6, s.level_speeds_scaled[z]);
+    print_scaling(s, ff);
 
     // Time-step limits for the smallest particle (M-9.2).
     const TimeScales ts = time_scales(c, r, s, ff);

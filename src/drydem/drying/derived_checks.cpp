@@ -103,9 +103,13 @@ void check_minimum_image(const Config& c, const FilmRecipe& r, const ScaledParam
 }
 
 /// The keys behind the scaled forces and viscosities, named by every refusal of a model quantity.
-constexpr std::string_view kScalingKeys[] = {
-    "scaling.scheme",           "scaling.time_factor",    "scaling.viscosity_reduction",
-    "scaling.capillary_factor", "scaling.hamaker_factor", "scaling.stiffness_factor"};
+constexpr std::string_view kScalingKeys[] = {"scaling.scheme",
+                                             "scaling.time_factor",
+                                             "scaling.viscosity_reduction",
+                                             "scaling.capillary_factor",
+                                             "scaling.hamaker_factor",
+                                             "scaling.stiffness_factor",
+                                             "scaling.cb_density_scaling"};
 
 std::vector<std::string_view> with_scaling(std::vector<std::string_view> keys) {
     keys.insert(keys.end(), std::begin(kScalingKeys), std::end(kScalingKeys));
@@ -376,10 +380,11 @@ TimeScales time_scales(const Config& c, const FilmRecipe& r, const ScaledParamet
     TimeScales t;
     t.diameter = p.diameter;
     const double rad = 0.5 * p.diameter;
-    t.mass = p.density * sphere_volume(rad);
+    const double inertial_density = p.density * (p.is_cb ? s.cb_density_scaling : 1.0);
+    t.mass = inertial_density * sphere_volume(rad);
     const double e = p.is_cb ? s.youngs_cb[1] : s.youngs_ncm[1];
     const HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair_params(smallest, smallest));
-    t.rayleigh = rayleigh_time(rad, p.density, e, c.poisson_ratio);
+    t.rayleigh = rayleigh_time(rad, inertial_density, e, c.poisson_ratio);
     t.contact_at_1m_s = hertz_contact_time(t.mass / 2, rad / 2, hm.e_star, 1.0);
     t.contact_at_level_speed =
         hertz_contact_time(t.mass / 2, rad / 2, hm.e_star, s.level_speeds_scaled.front());

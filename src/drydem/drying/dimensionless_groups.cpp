@@ -23,6 +23,7 @@ Config physical_config(const Config& c) {
     Config p = c;
     p.scaling_scheme = "force_ratio";
     p.time_factor = p.viscosity_reduction = p.stiffness_factor = 1.0;
+    p.drying_cb_density_scaling = 1.0;
     p.capillary_factor = p.hamaker_factor = 0.0;
     return p;
 }
@@ -40,14 +41,15 @@ double push_length(const FilmRecipe& recipe) {
 }
 
 Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_speed,
-                 double thickness) {
+                 double thickness, double cb_inertia) {
     const int cb = recipe.cb_species();
     int ncm = 0; // the largest NCM class
     for (int s = 0; s < cb; ++s)
         if (recipe.species[std::size_t(s)].diameter > recipe.species[std::size_t(ncm)].diameter)
             ncm = s;
     const SizeClass &n = recipe.species[std::size_t(ncm)], &c = recipe.species[std::size_t(cb)];
-    const double r_n = 0.5 * n.diameter, r_c = 0.5 * c.diameter, m_n = mass_of(n), m_c = mass_of(c);
+    const double r_n = 0.5 * n.diameter, r_c = 0.5 * c.diameter, m_n = mass_of(n),
+                 m_c = mass_of(c) * cb_inertia;
     const double U = level_speed, H = thickness;
     const BodyParams &body_n = ff.body_params(ncm), &body_c = ff.body_params(cb);
     const CapillaryParams& capillary = law<CapillaryFrontLaw>(body_c);
@@ -103,9 +105,9 @@ DimensionlessGroups dimensionless_groups(const Config& c) {
     for (std::size_t z = 0; z < sim.level_speeds_scaled.size(); ++z) {
         d.level_speeds_physical.push_back(phys.level_speeds_scaled[z]);
         d.physical.push_back(
-            groups_of(ff_phys, recipe, phys.level_speeds_scaled[z], d.film_thickness));
-        d.simulated.push_back(
-            groups_of(ff_sim, recipe, sim.level_speeds_scaled[z], d.film_thickness));
+            groups_of(ff_phys, recipe, phys.level_speeds_scaled[z], d.film_thickness, 1.0));
+        d.simulated.push_back(groups_of(ff_sim, recipe, sim.level_speeds_scaled[z],
+                                        d.film_thickness, sim.cb_density_scaling));
     }
     return d;
 }

@@ -47,9 +47,10 @@ struct DimensionlessGroups {
     std::vector<Groups> physical, simulated;   ///< per dryer zone
 };
 
-/// The groups of one force field (the laws' parameters) at level speed U and thickness H.
+/// The groups of one force field (the laws' parameters) at level speed U and thickness H, the CB
+/// spheres' inertia × cb_inertia (scaling.cb_density_scaling; 1 for the process).
 Groups groups_of(const ForceField& ff, const FilmRecipe& recipe, double level_speed,
-                 double thickness);
+                 double thickness, double cb_inertia);
 
 /// ℓ* = 2 Σ N_s r_s² / Σ N_s r_s of the recipe [m].
 double push_length(const FilmRecipe& recipe);

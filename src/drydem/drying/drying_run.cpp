@@ -128,6 +128,7 @@ Simulation DryingRun::make_simulation() {
     if (!resumed_) {
         particles = wet_film_particles(c_, opt_, film_, *log_); // the same on every rank
         if (world_.rank == 0) write_particles_csv(opt_.output_dir / "initial.csv", particles);
+        scale_cb_inertia(particles, film_.recipe, film_.scaled); // a checkpoint keeps it
     }
     count_species(film_, resumed_ ? resumed_->engine.particles : particles);
     log_->info("DryDEM {} ({}) run '{}': {} NCM + {} CB particles, box {:.4g} x {:.4g} um, H_wet = "

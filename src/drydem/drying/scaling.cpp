@@ -25,6 +25,7 @@ ScaledParameters scale_parameters(const Config& c) {
                                                     : paper_capillary_factor;
     s.hamaker_factor = force_ratio ? k / b : c.hamaker_factor > 0.0 ? c.hamaker_factor : k;
     s.stiffness_factor = c.stiffness_factor;
+    s.cb_density_scaling = c.drying_cb_density_scaling;
     s.gravity_physical = c.gravity;
     s.gravity_scaled = c.gravity * k / b; // Eq. 13 keeps v_level / v_settling
     s.drag_viscosity_physical = c.viscosity;
@@ -79,6 +80,7 @@ nlohmann::json to_json(const ScaledParameters& s) {
         {"capillary_factor", s.capillary_factor},
         {"hamaker_factor", s.hamaker_factor},
         {"stiffness_factor_e", s.stiffness_factor},
+        {"cb_density_scaling", s.cb_density_scaling},
         {"gravity_m_s2", pair(s.gravity_physical, s.gravity_scaled)},
         {"stokes_viscosity_Pa_s", pair(s.drag_viscosity_physical, s.drag_viscosity_scaled)},
         {"lubrication_viscosity_Pa_s", s.lubrication_viscosity},
@@ -93,6 +95,11 @@ nlohmann::json to_json(const ScaledParameters& s) {
          {{"physical", s.shrinkage_rates_physical}, {"level_speed_scaled", s.level_speeds_scaled}}},
         {"zone_duration_s", pair(s.zone_duration_physical, s.zone_duration_scaled)},
     };
+}
+
+void scale_cb_inertia(ParticleStore& p, const FilmRecipe& recipe, const ScaledParameters& s) {
+    if (s.cb_density_scaling != 1.0)
+        p.scale_inertia(std::uint8_t(recipe.cb_species()), s.cb_density_scaling);
 }
 
 Integrator integrator_of(const Config& c) {

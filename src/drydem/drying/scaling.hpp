@@ -8,7 +8,8 @@
 //                (capillary, van der Waals, double layer, gravity) × f = k/b: the capillary
 //                number and every ratio of forces stay the process's; what is left distorted is
 //                inertia (Stokes number × k b) and the overlap (× (f/e)^(2/3))
-// and in both the Young's moduli × e (scaling.stiffness_factor).
+// and in both the Young's moduli × e (scaling.stiffness_factor) and the CB spheres' inertia × S
+// (scaling.cb_density_scaling: their Stokes number × S, their weight physical).
 #pragma once
 #include "drydem/engine/simulation.hpp"
 #include "drydem/io/config.hpp"
@@ -22,7 +23,8 @@ namespace drydem {
 struct ScaledParameters {
     std::string scheme; ///< "paper" or "force_ratio"
     double time_factor, viscosity_reduction, capillary_factor, hamaker_factor, stiffness_factor;
-    double gravity_physical, gravity_scaled;                        ///< [m/s^2]
+    double cb_density_scaling;               ///< S: the CB spheres' mass and moment of inertia × S
+    double gravity_physical, gravity_scaled; ///< [m/s^2]
     double drag_viscosity_physical, drag_viscosity_scaled;          ///< [Pa s]
     double lubrication_viscosity;                                   ///< [Pa s], as simulated
     double hamaker_cb_cb[2], hamaker_ncm_cb[2], hamaker_ncm_ncm[2]; ///< {physical, scaled} [J]
@@ -46,6 +48,10 @@ ScaledParameters scale_parameters(const Config& c);
 /// (Hamaker constants, surface tension, Young's moduli, the lubrication viscosity in `viscosity`,
 /// the double layer's strength in its permittivity). Only the laws' parameter mapping (law_parameters.cpp) reads it.
 Config simulated_config(const Config& c, const ScaledParameters& s);
+
+/// The CB spheres of `p` take their scaled inertia (scaling.cb_density_scaling; density scaling:
+/// gravity and buoyancy read the density, which stays physical).
+void scale_cb_inertia(ParticleStore& p, const FilmRecipe& recipe, const ScaledParameters& s);
 
 /// numerics.integrator as the engine's enum.
 Integrator integrator_of(const Config& c);

@@ -66,7 +66,8 @@ std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const 
     ci.integrator = integrator;
     const double overlap = 0.02 * 0.5 * recipe.species[std::size_t(recipe.cb_species())].diameter;
     std::vector<ClusterEstimate> out;
-    for (const ReferenceCluster& k : reference_clusters(recipe, overlap)) {
+    for (ReferenceCluster& k : reference_clusters(recipe, overlap)) {
+        scale_cb_inertia(k.particles, recipe, scale_parameters(c));
         const Simulation::StabilityEstimate e =
             cluster_simulation(ci, recipe, k).stability_estimate();
         out.push_back({k.name, e, guarded_time_step(ci.time_step_cap(), e)});
