@@ -20,8 +20,9 @@ namespace drydem::app {
 namespace {
 
 /// The stability guard's own estimate (the code a run uses at every rebuild) on the reference
-/// clusters, touching at 2 % of the CB radius, gaps reduced by the configured skin.
-void print_guard_clusters(const Config& c, const FilmRecipe& r) {
+/// clusters, touching at 2 % of the CB radius, gaps reduced by the configured skin. Returns the
+/// smallest guarded step of the configured integrator (infinite for the quasi-static step).
+double print_guard_clusters(const Config& c, const FilmRecipe& r) {
     const auto expl = guard_on_reference_clusters(c, r, "explicit");
     const auto semi = guard_on_reference_clusters(c, r, "semi_implicit");
     fmt::print("  stability guard on reference clusters (docs/model.md \"Stability guard\"):\n");
@@ -31,6 +32,11 @@ void print_guard_clusters(const Config& c, const FilmRecipe& r) {
         fmt::print("    {:<34} {:>12.3g} {:>12.3g} {:>12.3g} | {:>12.3g} {:>12.3g}\n", expl[k].name,
                    expl[k].estimate.damping_rate, expl[k].estimate.stiffness_rate, expl[k].dt,
                    semi[k].estimate.stiffness_rate, semi[k].dt);
+    double smallest = INFINITY;
+    if (c.integrator != "quasi_static")
+        for (const ClusterEstimate& k : c.integrator == "explicit" ? expl : semi)
+            smallest = std::min(smallest, k.dt);
+    return smallest;
 }
 
 /// The dimensionless groups per dryer zone, physical and as simulated, with their ratio: what the
@@ -212,6 +218,52 @@ void print_scaling(const ScaledParameters& s, const ForceField& ff) {
                    s.shrinkage_rates_physical[z] * 1e6, s.level_speeds_scaled[z]);
 }
 
+/// Cost estimate (M-8.3), from the derived-quantity checks' own estimate and the step the guard
+/// allows on the reference clusters.
+void print_cost(const Config& c, const FilmRecipe& r, const ScaledParameters& s,
+                double guarded_dt) {
+    const DerivedQuantities d = derived_quantities(c);
+    const double h_final = d.final_thickness, travel = d.level_travel, t_sim = d.sim_time;
+    // The guard lowers the step below the cap where contacts set it (the force-ratio scheme):
+    // the reference clusters' guarded step bounds the step count from below.
+    const double steps = std::max(d.steps, t_sim / guarded_dt);
+    fmt::print("\nCost estimate (M-8.3)\n");
+    fmt::print("  final thickness (~2.4 g/cm3) {:.4g} um, level travel {:.4g} um\n", h_final * 1e6,
+               travel * 1e6);
+    fmt::print("  simulated time            {:.3g} s ({:.3g} s process, incl. {:g} s relaxation)\n",
+               t_sim, s.process_time(t_sim), c.relaxation);
+    fmt::print("  steps                     {:.3g} at the largest step{}\n", d.steps,
+               steps > d.steps
+                   ? fmt::format("; at least {:.3g} at the reference clusters' guarded step "
+                                 "{:.3g} s (a film's own clusters lower it up to ~2x more)",
+                                 steps, guarded_dt)
+                   : " (the guard may lower it)");
+    fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
+    const int cores = c.threads > 0 ? c.threads : std::max(1, omp_get_num_procs());
+    DerivedQuantities at_guarded = d;
+    at_guarded.steps = steps;
+    const double wall = estimated_wall_time(at_guarded, cores);
+    fmt::print(
+        "  wall time                 ~{:.3g} h on {} cores at {:.3g} particle-steps/s per core{}\n",
+        wall / 3600, cores, d.particle_steps_per_core,
+        wall > wall_time_warning ? "; warning: more than a day (`drydem run` warns too)" : "");
+    const double memory = double(r.particle_count()) * bytes_per_particle + 5e6;
+    fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers){}\n",
+               memory / 1e6,
+               memory > 0.8 * physical_memory_bytes()
+                   ? fmt::format("; more than 80 % of this machine's {:.3g} GB: "
+                                 "`drydem run` refuses it here",
+                                 physical_memory_bytes() / 1e9)
+                   : "");
+    if (c.analysis_at_end && c.analysis_voxel_size > 0.0) {
+        const double voxels = voxel_image_voxels(c, r, h_final);
+        fmt::print(
+            "  analysis at the end       voxel image ~{:.2g} voxels at {:.3g} um, ~{:.1f} GB "
+            "(analysis.voxel_size; 0 = none)\n",
+            voxels, c.analysis_voxel_size * 1e6, analysis::voxel_analysis_bytes * voxels / 1e9);
+    }
+}
+
 void print_check(const Config& c) {
     const FilmRecipe r = make_recipe(c);
     const ScaledParameters s = scale_parameters(c);
@@ -253,44 +305,12 @@ void print_check(const Config& c) {
                ts.contact_at_1m_s, ts.contact_at_level_speed);
     fmt::print("  Stokes drag (scaled)      2 m/(6 pi eta r) = {:.3g} s\n", ts.drag_relaxation);
     fmt::print("  capillary spring period   {:.3g} s\n", ts.capillary_period);
-    print_guard_clusters(c, r);
+    const double guarded_dt = print_guard_clusters(c, r);
     fmt::print("\n");
     print_groups(dimensionless_groups(c));
     print_calendering(c, r);
 
-    // Cost estimate (M-8.3), from the derived-quantity checks' own estimate.
-    const DerivedQuantities d = derived_quantities(c);
-    const double h_final = d.final_thickness, travel = d.level_travel, t_sim = d.sim_time;
-    const double steps = d.steps;
-    fmt::print("\nCost estimate (M-8.3)\n");
-    fmt::print("  final thickness (~2.4 g/cm3) {:.4g} um, level travel {:.4g} um\n", h_final * 1e6,
-               travel * 1e6);
-    fmt::print("  simulated time            {:.3g} s ({:.3g} s process, incl. {:g} s relaxation)\n",
-               t_sim, s.process_time(t_sim), c.relaxation);
-    fmt::print("  steps                     {:.3g} at the largest step (the guard may lower it)\n",
-               steps);
-    fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
-    const int cores = c.threads > 0 ? c.threads : std::max(1, omp_get_num_procs());
-    const double wall = estimated_wall_time(d, cores);
-    fmt::print(
-        "  wall time                 ~{:.3g} h on {} cores at {:.3g} particle-steps/s per core{}\n",
-        wall / 3600, cores, d.particle_steps_per_core,
-        wall > wall_time_warning ? "; warning: more than a day (`drydem run` warns too)" : "");
-    const double memory = double(r.particle_count()) * bytes_per_particle + 5e6;
-    fmt::print("  memory                    ~{:.0f} MB (particles, neighbor lists, buffers){}\n",
-               memory / 1e6,
-               memory > 0.8 * physical_memory_bytes()
-                   ? fmt::format("; more than 80 % of this machine's {:.3g} GB: "
-                                 "`drydem run` refuses it here",
-                                 physical_memory_bytes() / 1e9)
-                   : "");
-    if (c.analysis_at_end && c.analysis_voxel_size > 0.0) {
-        const double voxels = voxel_image_voxels(c, r, h_final);
-        fmt::print(
-            "  analysis at the end       voxel image ~{:.2g} voxels at {:.3g} um, ~{:.1f} GB "
-            "(analysis.voxel_size; 0 = none)\n",
-            voxels, c.analysis_voxel_size * 1e6, analysis::voxel_analysis_bytes * voxels / 1e9);
-    }
+    print_cost(c, r, s, guarded_dt);
 }
 
 } // namespace drydem::app
