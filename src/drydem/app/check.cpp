@@ -235,7 +235,8 @@ void print_cost(const Config& c, const FilmRecipe& r, const ScaledParameters& s,
     fmt::print("  steps                     {:.3g} at the largest step{}\n", d.steps,
                steps > d.steps
                    ? fmt::format("; at least {:.3g} at the reference clusters' guarded step "
-                                 "{:.3g} s (a film's own clusters lower it up to ~2x more)",
+                                 "{:.3g} s (the guard's fixed point; a film's own clusters "
+                                 "may lower it)",
                                  steps, guarded_dt)
                    : " (the guard may lower it)");
     fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());

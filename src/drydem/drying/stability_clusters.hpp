@@ -38,7 +38,8 @@ struct ClusterEstimate {
 
 /// The guard on every reference cluster, touching at 2 % of the CB radius, with `integrator`
 /// ("explicit" or "semi_implicit") in place of the configured one: what `drydem check` prints and
-/// load_config checks for finiteness.
+/// load_config checks for finiteness. Semi-implicit: the step where the guard settles (its rate
+/// depends on the step through M + Δt D), iterated from the cap as a run's guard does.
 std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const FilmRecipe& recipe,
                                                          const std::string& integrator);
 
