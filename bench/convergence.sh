@@ -14,6 +14,7 @@
 #               Stokes knob at fixed f: b = 33.3 (k = 3e5, k b = 1e7) and b = 316 (k = 2.85e6,
 #               k b = 9e8); with q_base (k b = 9e7) two decades of the Stokes number
 #   q_ecb400    CB Young's modulus 400 GPa instead of 142, at e = 24 (p99 overlap 0.2 %; against q_e24)
+#   q_e24_s4    the same with S = 4 (CB Stokes number 0.047; step up to 2x)
 #   q_e24_s16   the CB spheres' inertia x 16 (scaling.cb_density_scaling; CB Stokes number 0.19
 #               against the largest NCM's 0.36) at e = 24: against q_e24, whether the CB's inertia
 #               is out of the answer, which would make the step ~4x longer for free
@@ -71,6 +72,7 @@ for step in "$@"; do
     q_b33) study q_b33 $fr --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
     q_b316) study q_b316 $fr --set scaling.time_factor=2.846e6 --set scaling.viscosity_reduction=316.23 ;;
     q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa --set scaling.stiffness_factor=24 ;;
+    q_e24_s4) study q_e24_s4 $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=4 ;;
     q_e24_s16) study q_e24_s16 $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=16 ;;
     q_s16_dt_half) study q_s16_dt_half $fr "${s16[@]}" --set run.time_step=2.3e-11 ;;
     q_s16_b33) study q_s16_b33 $fr "${s16[@]}" --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;

@@ -34,7 +34,8 @@ SERIES = {
                                                            ("q_base", 75), ("q_e240", 240)]),
     "Stokes knob: k b at f = k/b = 9e3": ("q_base", [("q_b33", 1e7), ("q_base", 9e7), ("q_b316", 9e8)]),
     "CB Young's modulus (GPa), at e = 24": ("q_e24", [("q_e24", 142), ("q_ecb400", 400)]),
-    "density scaling of the CB: S (scaling.cb_density_scaling), at e = 24": ("q_e24", [("q_e24", 1), ("q_e24_s16", 16)]),
+    "density scaling of the CB: S (scaling.cb_density_scaling), at e = 24": ("q_e24", [("q_e24", 1), ("q_e24_s4", 4),
+                                                                                       ("q_e24_s16", 16)]),
     "time step": ("q_base", [("q_base", 1.0), ("q_dt_half", 0.5)]),
     # The knobs around e = 24 with the CB's inertia x 16 (q_e24_s16), the cheaper setting.
     "time step, S = 16: run.time_step over the guard's mean step": (
@@ -49,7 +50,7 @@ SERIES = {
     "solver tolerance of the quasi-static step": ("q_qs", [("q_qs", 1e-4), ("q_qs_tol3", 1e-3)]),
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
-STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s16",
+STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s16",
          "q_s16_dt_half", "q_s16_b33", "q_s16_e7.5", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
