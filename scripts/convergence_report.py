@@ -175,8 +175,9 @@ class Report:
             plt.close(fig)
 
     def seed_sd(self, key):
-        """The seed s.d. of a quantity: q_base's where it has several seeds, else q_paper's."""
-        for s in ["q_base", "q_paper"]:
+        """The seed s.d. of a quantity: of the force-ratio film where it has several seeds (q_base, then
+        q_e24), else q_paper's."""
+        for s in ["q_base", "q_e24", "q_paper"]:
             m, sd, n = mean_sd([x[key] for x in self.steps[s]])
             if n > 1:
                 return sd, s
