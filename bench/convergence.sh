@@ -17,11 +17,7 @@
 #   q_e24_s4    the same with S = 4 (CB Stokes number 0.047; step up to 2x)
 #   q_e24_s16   the CB spheres' inertia x 16 (scaling.cb_density_scaling; CB Stokes number 0.19
 #               against the largest NCM's 0.36) at e = 24: against q_e24, whether the CB's inertia
-#               is out of the answer, which would make the step ~4x longer for free
-#   q_s16_dt_half q_s16_b33 q_s16_e7.5
-#               the knobs around e = 24 with S = 16 (q_e24_s16): run.time_step at half its mean
-#               step (4.6e-11 s), the Stokes knob b = 33.3 (k = 3e5, k b = 1e7), the overlap knob
-#               e = 7.5
+#               is out of the answer (it is not: docs/validation.md)
 #   q_dt_half   run.time_step at half of q_base's mean step
 #   q_qs        the quasi-static step (numerics.integrator, docs/model.md M-9.1) at the process's
 #               own settings, k = b = e = 1 (against q_e24: the Stokes number and the overlap
@@ -58,7 +54,6 @@ study() {  # $1 step, $2 example config, rest: drydem study arguments
 fr=quick_force_ratio.toml
 qs=(--set numerics.integrator=quasi_static --set scaling.time_factor=1 --set scaling.viscosity_reduction=1
     --set scaling.stiffness_factor=1)
-s16=(--set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=16)
 for step in "$@"; do
   echo "== $step ($(date -u +%H:%M))" >&2
   case $step in
@@ -74,9 +69,6 @@ for step in "$@"; do
     q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa --set scaling.stiffness_factor=24 ;;
     q_e24_s4) study q_e24_s4 $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=4 ;;
     q_e24_s16) study q_e24_s16 $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=16 ;;
-    q_s16_dt_half) study q_s16_dt_half $fr "${s16[@]}" --set run.time_step=2.3e-11 ;;
-    q_s16_b33) study q_s16_b33 $fr "${s16[@]}" --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
-    q_s16_e7.5) study q_s16_e7.5 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=16 ;;
     q_dt_half) study q_dt_half $fr --set "run.time_step=${DT_HALF:?set DT_HALF to half the mean step of q_base}" ;;
     q_qs) study q_qs $fr "${qs[@]}" ;;
     q_qs_tol3) study q_qs_tol3 $fr "${qs[@]}" --set numerics.solver_tolerance=1e-3 ;;
