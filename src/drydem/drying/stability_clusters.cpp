@@ -75,7 +75,9 @@ std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const 
         // re-estimates at every rebuild and settles where Δt ω(Δt) = 1. Iterated here from the
         // cap, the steps fall monotonically to that fixed point (ω falls as Δt grows).
         for (int it = 0; integrator == "semi_implicit" && it < 50; ++it) {
-            if (std::abs(dt - sim.settings().dt) <= 1e-3 * dt) break;
+            // A step that is not positive and finite is left for the caller to refuse.
+            if (!(dt > 0.0 && std::isfinite(dt)) || std::abs(dt - sim.settings().dt) <= 1e-3 * dt)
+                break;
             sim.set_time_step(dt);
             e = sim.stability_estimate();
             dt = guarded_time_step(ci.time_step_cap(), e);
