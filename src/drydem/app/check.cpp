@@ -241,9 +241,10 @@ void print_cost(const Config& c, const FilmRecipe& r, const ScaledParameters& s,
                    : " (the guard may lower it)");
     fmt::print("  particle-steps            {:.3g}\n", steps * r.particle_count());
     const int cores = c.threads > 0 ? c.threads : std::max(1, omp_get_num_procs());
-    DerivedQuantities at_guarded = d;
-    at_guarded.steps = steps;
-    const double wall = estimated_wall_time(at_guarded, cores);
+    const double wall = estimated_wall_time({.particles = d.particles,
+                                             .steps = steps,
+                                             .particle_steps_per_core = d.particle_steps_per_core},
+                                            cores);
     fmt::print(
         "  wall time                 ~{:.3g} h on {} cores at {:.3g} particle-steps/s per core{}\n",
         wall / 3600, cores, d.particle_steps_per_core,

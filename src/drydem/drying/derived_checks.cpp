@@ -380,7 +380,7 @@ TimeScales time_scales(const Config& c, const FilmRecipe& r, const ScaledParamet
     TimeScales t;
     t.diameter = p.diameter;
     const double rad = 0.5 * p.diameter;
-    const double inertial_density = p.density * (p.is_cb ? s.cb_density_scaling : 1.0);
+    const double inertial_density = p.density * s.inertia_factor(p);
     t.mass = inertial_density * sphere_volume(rad);
     const double e = p.is_cb ? s.youngs_cb[1] : s.youngs_ncm[1];
     const HertzMindlinParams& hm = law<HertzMindlinLaw>(ff.pair_params(smallest, smallest));

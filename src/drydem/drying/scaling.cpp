@@ -98,8 +98,9 @@ nlohmann::json to_json(const ScaledParameters& s) {
 }
 
 void scale_cb_inertia(ParticleStore& p, const FilmRecipe& recipe, const ScaledParameters& s) {
-    if (s.cb_density_scaling != 1.0)
-        p.scale_inertia(std::uint8_t(recipe.cb_species()), s.cb_density_scaling);
+    const int cb = recipe.cb_species();
+    if (const double f = s.inertia_factor(recipe.species[std::size_t(cb)]); f != 1.0)
+        p.scale_inertia(std::uint8_t(cb), f);
 }
 
 Integrator integrator_of(const Config& c) {

@@ -37,6 +37,10 @@ struct ScaledParameters {
     /// Simulated time ↔ process (physical) time.
     [[nodiscard]] double process_time(double sim_time) const { return sim_time * time_factor; }
     [[nodiscard]] double sim_time(double process_time) const { return process_time / time_factor; }
+    /// The factor on a sphere's mass and moment of inertia (the CB's density scaling).
+    [[nodiscard]] double inertia_factor(const SizeClass& sc) const {
+        return sc.is_cb ? cb_density_scaling : 1.0;
+    }
     /// The factor on the Stokes drag's force at a given physical velocity field: k/b (both schemes).
     [[nodiscard]] double drag_force_factor() const { return time_factor / viscosity_reduction; }
 };

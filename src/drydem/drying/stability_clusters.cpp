@@ -65,9 +65,10 @@ std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const 
     Config ci = c;
     ci.integrator = integrator;
     const double overlap = 0.02 * 0.5 * recipe.species[std::size_t(recipe.cb_species())].diameter;
+    const ScaledParameters scaled = scale_parameters(c);
     std::vector<ClusterEstimate> out;
     for (ReferenceCluster& k : reference_clusters(recipe, overlap)) {
-        scale_cb_inertia(k.particles, recipe, scale_parameters(c));
+        scale_cb_inertia(k.particles, recipe, scaled);
         Simulation sim = cluster_simulation(ci, recipe, k);
         Simulation::StabilityEstimate e = sim.stability_estimate();
         double dt = guarded_time_step(ci.time_step_cap(), e);
