@@ -19,10 +19,24 @@
 #               against the largest NCM's 0.36) at e = 24: against q_e24, whether the CB's inertia
 #               is out of the answer (it is not: docs/validation.md)
 #   q_dt_half   run.time_step at half of q_base's mean step
+#   q_e7.5_s4   the cheapest candidate for the converged setting: e = 7.5 (against q_e24: the
+#               overlap knob) with S = 4 (against q_e24_s4: the CB's inertia), both of which
+#               matched their neighbours alone; the series below are taken against it
+#   q_e7.5_s4_b33
+#               Stokes knob at the candidate: k = 3e5, b = 33.3 (k b = 1e7 against 9e7)
+#   q_e7.5_s4_x the candidate with the explicit reference integrator (velocity Verlet), its step
+#               cap lifted to the semi-implicit one's (1e-10 s) so that the guard sets both: the
+#               check of the integration against the reference at the same physical setting
+#   q_e7.5_s4_dt
+#               step knob at the candidate: run.time_step at DT (half its mean step)
 #   q_qs        the quasi-static step (numerics.integrator, docs/model.md M-9.1) at the process's
 #               own settings, k = b = e = 1 (against q_e24: the Stokes number and the overlap
 #               differ); q_qs_tol3 its solver tolerance 1e-3 (default 1e-4); q_qs_d75 its
 #               displacement per step 75 nm (default 37.5 nm, 5 % of r_CB)
+#   r20_e7.5_s4 the paper's 20.1 mg/cm2 recipe (examples/paper_20.1.toml, paper values) at the
+#               candidate setting (force ratio, f = 9e3, k = 9e5, e = 7.5, S = 4) in a 40 um box:
+#               the film whose push number the paper's scheme distorts (~2e6 steps, 13,382
+#               particles: ~3.6 h on one core; checkpointed every 10 min, resumed by rerunning)
 #   archive:STEP
 #               the runs STEP has finished so far into the archive
 #
@@ -69,10 +83,21 @@ for step in "$@"; do
     q_ecb400) study q_ecb400 $fr --set materials.cb_youngs_modulus=400GPa --set scaling.stiffness_factor=24 ;;
     q_e24_s4) study q_e24_s4 $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=4 ;;
     q_e24_s16) study q_e24_s16 $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=16 ;;
+    q_e7.5_s4) study q_e7.5_s4 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 ;;
+    q_e7.5_s4_b33) study q_e7.5_s4_b33 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
+    q_e7.5_s4_x) study q_e7.5_s4_x $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
+    q_e7.5_s4_dt) study q_e7.5_s4_dt $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set "run.time_step=${DT:?set DT to half the mean step of q_e7.5_s4}" ;;
     q_dt_half) study q_dt_half $fr --set "run.time_step=${DT_HALF:?set DT_HALF to half the mean step of q_base}" ;;
     q_qs) study q_qs $fr "${qs[@]}" ;;
     q_qs_tol3) study q_qs_tol3 $fr "${qs[@]}" --set numerics.solver_tolerance=1e-3 ;;
     q_qs_d75) study q_qs_d75 $fr "${qs[@]}" --set numerics.max_displacement=75nm ;;
+    r20_e7.5_s4) study r20_e7.5_s4 paper_20.1.toml --set scaling.scheme=force_ratio \
+      --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100 \
+      --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set film.box_x=40um --set film.box_y=40um ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac

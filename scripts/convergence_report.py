@@ -17,6 +17,7 @@ import argparse
 import csv
 import json
 import math
+import re
 from pathlib import Path
 
 import matplotlib
@@ -37,6 +38,15 @@ SERIES = {
     "density scaling of the CB: S (scaling.cb_density_scaling), at e = 24": ("q_e24", [("q_e24", 1), ("q_e24_s4", 4),
                                                                                        ("q_e24_s16", 16)]),
     "time step": ("q_base", [("q_base", 1.0), ("q_dt_half", 0.5)]),
+    # The candidate for the converged setting, e = 7.5 and S = 4 (bench/convergence.sh), against
+    # its neighbours in each knob, and the knobs not yet turned at it.
+    "overlap knob e, at S = 4": ("q_e7.5_s4", [("q_e7.5_s4", 7.5), ("q_e24_s4", 24)]),
+    "density scaling S, at e = 7.5": ("q_e7.5_s4", [("q_e7.5", 1), ("q_e7.5_s4", 4)]),
+    "Stokes knob k b, at e = 7.5 and S = 4": ("q_e7.5_s4", [("q_e7.5_s4_b33", 1e7), ("q_e7.5_s4", 9e7)]),
+    "integrator at e = 7.5 and S = 4: semi-implicit 1, explicit reference 2": (
+        "q_e7.5_s4", [("q_e7.5_s4", 1), ("q_e7.5_s4_x", 2)]),
+    "time step at e = 7.5 and S = 4, relative to the guarded one": (
+        "q_e7.5_s4", [("q_e7.5_s4_dt", 0.5), ("q_e7.5_s4", 1.0)]),
     # The quasi-static step (issue 30) at the process's own settings (k = b = e = 1): against the
     # explicit reference at e = 24 (the Stokes number of the largest NCM, zone 2, is the knob that
     # differs, with the overlap), and its own two knobs.
@@ -46,7 +56,7 @@ SERIES = {
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
 STEPS = ["q_paper", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s16",
-         "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
+         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_x", "q_e7.5_s4_dt", "r20_e7.5_s4", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
 def leaves_level(run_dir: Path, after_s: float):
@@ -145,7 +155,7 @@ class Report:
             self.say(f"### {title} (against {ref})", "",
                      "| step | knob | final thickness (µm) | Δ (µm) | 2 × s.e. | moves? | half-solid (µm) | Δ (µm) | 2 × s.e. | moves? |",
                      "|---|---|---|---|---|---|---|---|---|---|")
-            xs, ms, es = [], [], []
+            xs, ms, es = [], {"thickness": [], "half_solid": []}, {"thickness": [], "half_solid": []}
             for s, x in have:
                 cells = [s, f"{x:g}"]
                 for key in ("thickness", "half_solid"):
@@ -155,17 +165,19 @@ class Report:
                     se2 = 2 * math.sqrt(sd ** 2 / n + sdr ** 2 / nr)
                     verdict = "–" if s == ref else ("no" if abs(m - mr) < se2 else "**yes**")
                     cells += [cell([y[key] for y in self.steps[s]], 2), f"{m - mr:+.2f}", f"{se2:.2f}", verdict]
-                    if key == "thickness":
-                        xs.append(x), ms.append(m), es.append(sd)
+                    ms[key].append(m), es[key].append(sd)
+                xs.append(x)
                 self.say("| " + " | ".join(cells) + " |")
             self.say("")
             fig, ax = plt.subplots(figsize=(5, 3.5))
-            ax.errorbar(xs, ms, yerr=es, fmt="o-")
+            for key, label in (("thickness", "final (highest top)"), ("half_solid", "half-solid")):
+                ax.errorbar(xs, ms[key], yerr=es[key], fmt="o-", capsize=3, label=label)
             ax.set_xscale("log" if max(xs) / min(xs) > 5 else "linear")
-            ax.set_xlabel(title), ax.set_ylabel("final thickness (µm)")
+            ax.set_xlabel(title, fontsize=8), ax.set_ylabel("thickness (µm), ± seed s.d.")
+            ax.legend(fontsize=8)
             ax.set_title("quick case, force-ratio scheme", fontsize=9)
             fig.tight_layout()
-            name = title.split(":")[0].split(" ")[0].lower().replace("'", "")
+            name = "_".join(re.findall(r"[a-z0-9]+", re.split("[:,]", title)[0].lower().replace("'", "")))
             fig.savefig(self.figures / f"convergence_{name}.png", dpi=120)
             plt.close(fig)
 
