@@ -27,12 +27,10 @@
 #   q_e7.5_s4_x the candidate with the explicit reference integrator (velocity Verlet), its step
 #               cap lifted to the semi-implicit one's (1e-10 s) so that the guard sets both: the
 #               check of the integration against the reference at the same physical setting
-#   q_e7.5_s4_dt
-#               step knob at the candidate: run.time_step at DT (half its mean step)
-#   q_qs        the quasi-static step (numerics.integrator, docs/model.md M-9.1) at the process's
-#               own settings, k = b = e = 1 (against q_e24: the Stokes number and the overlap
-#               differ); q_qs_tol3 its solver tolerance 1e-3 (default 1e-4); q_qs_d75 its
-#               displacement per step 75 nm (default 37.5 nm, 5 % of r_CB)
+#   q_e7.5_s4_f025 q_e7.5_s4_f065
+#               step knob at the candidate: numerics.critical_step_fraction 0.25 (half the guarded
+#               step, which the guard keeps following the packing) and 0.65 (1.3x, the largest the
+#               semi-implicit kick allows; docs/model.md "Stability guard")
 #   r20_e7.5_s4 the paper's 20.1 mg/cm2 recipe (examples/paper_20.1.toml, paper values) at the
 #               candidate setting (force ratio, f = 9e3, k = 9e5, e = 7.5, S = 4) in a 40 um box:
 #               the film whose push number the paper's scheme distorts (~2e6 steps, 13,382
@@ -88,8 +86,10 @@ for step in "$@"; do
       --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
     q_e7.5_s4_x) study q_e7.5_s4_x $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
-    q_e7.5_s4_dt) study q_e7.5_s4_dt $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
-      --set "run.time_step=${DT:?set DT to half the mean step of q_e7.5_s4}" ;;
+    q_e7.5_s4_f025) study q_e7.5_s4_f025 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set numerics.critical_step_fraction=0.25 ;;
+    q_e7.5_s4_f065) study q_e7.5_s4_f065 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set numerics.critical_step_fraction=0.65 ;;
     q_dt_half) study q_dt_half $fr --set "run.time_step=${DT_HALF:?set DT_HALF to half the mean step of q_base}" ;;
     q_qs) study q_qs $fr "${qs[@]}" ;;
     q_qs_tol3) study q_qs_tol3 $fr "${qs[@]}" --set numerics.solver_tolerance=1e-3 ;;

@@ -312,3 +312,27 @@ TEST(Config, ForceRatioRefusesItsDerivedFactors) {
     EXPECT_NE(input_error("", {"scaling.stiffness_factor=0"}).find("scaling.stiffness_factor"),
               std::string::npos);
 }
+
+// numerics.critical_step_fraction (docs/model.md "Stability guard"): above 0.5 only with the
+// semi-implicit kick, never above 0.65, and not at all with the quasi-static step.
+TEST(Config, CriticalStepFractionAboveHalfOnlySemiImplicit) {
+    EXPECT_EQ(load_config("", "t", {"numerics.critical_step_fraction=0.65"}).critical_step_fraction,
+              0.65);
+    EXPECT_EQ(
+        load_config("", "t",
+                    {"numerics.integrator=\"explicit\"", "numerics.critical_step_fraction=0.25"})
+            .critical_step_fraction,
+        0.25);
+    const std::string explicit_msg = input_error(
+        "", {"numerics.integrator=\"explicit\"", "numerics.critical_step_fraction=0.6"});
+    EXPECT_NE(explicit_msg.find("numerics.critical_step_fraction = 0.6"), std::string::npos)
+        << explicit_msg;
+    EXPECT_NE(explicit_msg.find("up to 0.5"), std::string::npos) << explicit_msg;
+    const std::string qs_msg = input_error(
+        "", {"numerics.integrator=\"quasi_static\"", "numerics.critical_step_fraction=0.4"});
+    EXPECT_NE(qs_msg.find("no stability guard"), std::string::npos) << qs_msg;
+    EXPECT_NE(input_error("", {"numerics.critical_step_fraction=0.7"}).find("(0, 0.65]"),
+              std::string::npos);
+    EXPECT_NE(input_error("", {"numerics.critical_step_fraction=0"}).find("(0, 0.65]"),
+              std::string::npos);
+}

@@ -242,7 +242,8 @@ CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
     : c_(c), o_(o), status_(!o.quiet && isatty(STDERR_FILENO)),
       log_(make_run_logger(o.output_dir, o.quiet, false, status_)), film_(describe_film(c)),
       sim_(make_simulation(dried_film())),
-      guard_(GuardPolicy::adapt, largest_calender_step(c), *log_),
+      guard_(GuardPolicy::adapt, {largest_calender_step(c), critical_fraction_for(c, "explicit")},
+             *log_),
       fire_(1.8 * largest_calender_step(c)), relax_fire_(1.8 * largest_calender_step(c)),
       settle_force_(c.calender_settle_tolerance * film_.box.area() /
                     double(std::max<std::size_t>(sim_->particles().size(), 1))),

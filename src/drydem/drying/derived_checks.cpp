@@ -7,6 +7,7 @@
 #include "drydem/drying/dimensionless_groups.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/drying/stability_clusters.hpp"
+#include "drydem/drying/stability_guard.hpp"
 #include "drydem/setup/formulation.hpp"
 #include "drydem/core/sphere.hpp"
 #include <fmt/format.h>
@@ -209,6 +210,28 @@ void check_guard_rates(const Config& c, const FilmRecipe& r, const std::vector<s
                 bare);
         }
     }
+}
+
+/// numerics.critical_step_fraction above the explicit integrator's 0.5 only with the semi-implicit
+/// kick (its damping is implicit: the stiffness bound stands alone); the quasi-static step has no
+/// guarded step at all.
+void check_critical_step_fraction(const Config& c, const std::vector<std::string>& bare) {
+    const double f = c.critical_step_fraction;
+    if (c.integrator == "explicit" && f > kExplicitCriticalFraction)
+        refuse(c,
+               fmt::format("numerics.critical_step_fraction = {:g} with numerics.integrator = "
+                           "\"explicit\": allowed up to {:g} there, where the damping and "
+                           "stiffness bounds combine ((dt omega)^2 + 2 dt lambda < 4); larger "
+                           "only with \"semi_implicit\" (docs/model.md \"Stability guard\")",
+                           f, kExplicitCriticalFraction),
+               {"numerics.critical_step_fraction", "numerics.integrator"}, bare);
+    if (c.integrator == "quasi_static" && f != 0.5)
+        refuse(c,
+               fmt::format("numerics.critical_step_fraction = {:g} with numerics.integrator = "
+                           "\"quasi_static\": that step has no stability guard (numerics."
+                           "max_displacement sets it); leave the key at 0.5",
+                           f),
+               {"numerics.critical_step_fraction", "numerics.integrator"}, bare);
 }
 
 /// The end-of-run voxel image (docs/analysis.md): a finite size that fits in this machine's memory
@@ -428,6 +451,7 @@ void check_derived_quantities(const Config& c, const std::vector<std::string>& b
     check_minimum_image(c, r, s);
     check_groups(c, bare);
     check_time_scales(c, r, s, bare);
+    check_critical_step_fraction(c, bare);
     check_guard_rates(c, r, bare);
     check_voxel_image(c, r, estimated_travel(c, r, s).final_thickness, bare);
 

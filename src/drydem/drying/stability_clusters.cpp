@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/stability_clusters.hpp"
+#include "drydem/drying/stability_guard.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -71,9 +72,11 @@ std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const 
         scale_cb_inertia(k.particles, recipe, scaled);
         Simulation sim = cluster_simulation(ci, recipe, k);
         Simulation::StabilityEstimate e = sim.stability_estimate();
-        double dt = guarded_time_step(ci.time_step_cap(), e);
+        const double fraction = critical_fraction_for(c, integrator);
+        double dt = guarded_time_step(ci.time_step_cap(), e, fraction);
         // Semi-implicit: the rate is that of M + Δt D, so it depends on the step; a run's guard
-        // re-estimates at every rebuild and settles where Δt ω(Δt) = 1. Iterated here from the
+        // re-estimates at every rebuild and settles where Δt ω(Δt) = 2 f (f the critical-step
+        // fraction, numerics.critical_step_fraction). Iterated here from the
         // cap, the steps fall monotonically to that fixed point (ω falls as Δt grows).
         for (int it = 0; integrator == "semi_implicit" && it < 50; ++it) {
             // A step that is not positive and finite is left for the caller to refuse.
@@ -81,7 +84,7 @@ std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const 
                 break;
             sim.set_time_step(dt);
             e = sim.stability_estimate();
-            dt = guarded_time_step(ci.time_step_cap(), e);
+            dt = guarded_time_step(ci.time_step_cap(), e, fraction);
         }
         out.push_back({k.name, e, dt});
     }

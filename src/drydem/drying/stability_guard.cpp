@@ -17,15 +17,16 @@ GuardPolicy guard_policy_of(const std::string& name) {
         "numerics.stability_guard = \"{}\": allowed \"adapt\", \"refuse\", \"warn\"", name));
 }
 
-GuardDecision guard_decision(GuardPolicy policy, double dt, double cap,
+GuardDecision guard_decision(GuardPolicy policy, double dt, const GuardLimits& limits,
                              const Simulation::StabilityEstimate& e, double warned_indicator) {
     if (policy == GuardPolicy::adapt) {
-        const double target = guarded_time_step(cap, e);
+        const double target = guarded_time_step(limits.cap, e, limits.critical_fraction);
         return {target, stability_indicator(target, e)};
     }
     const double indicator = stability_indicator(dt, e);
-    if (indicator >= 2.0) return {dt, indicator, GuardDecision::Action::beyond_bound};
-    if (indicator > kGuardWarnIndicator && indicator > warned_indicator + kGuardWarnRise)
+    if (indicator >= limits.bound) return {dt, indicator, GuardDecision::Action::beyond_bound};
+    if (indicator > kGuardWarnFraction * limits.bound &&
+        indicator > warned_indicator + kGuardWarnRise)
         return {dt, indicator, GuardDecision::Action::warn_close};
     return {dt, indicator};
 }
@@ -56,7 +57,7 @@ std::string StabilityGuard::check(Simulation& sim) {
     const Simulation::StabilityEstimate e = sim.stability_estimate();
     wall_ += std::chrono::duration<double>(Clock::now() - t0).count();
     const double dt = sim.settings().dt;
-    const GuardDecision d = guard_decision(policy_, dt, cap_, e, warned_);
+    const GuardDecision d = guard_decision(policy_, dt, limits_, e, warned_);
     indicator_ = d.indicator;
     if (policy_ == GuardPolicy::adapt) {
         if (d.time_step != dt)
@@ -71,17 +72,19 @@ std::string StabilityGuard::check(Simulation& sim) {
     }
     if (d.action == GuardDecision::Action::beyond_bound) {
         const std::string msg = fmt::format(
-            "time step {:.3g} s is beyond the explicit stability bound: dt*lambda = {:.3g} >= 2 at "
-            "particle {} (damping rate {:.3g} /s, stiffness rate {:.3g} rad/s; docs/model.md "
-            "\"Stability guard\"); lower run.time_step or use numerics.stability_guard = \"adapt\"",
-            dt, d.indicator, e.particle_id, e.damping_rate, e.stiffness_rate);
+            "time step {:.3g} s is beyond the stability bound: max(dt*lambda, dt*omega) = {:.3g} "
+            ">= {:.3g} at particle {} (damping rate {:.3g} /s, stiffness rate {:.3g} rad/s; "
+            "docs/model.md \"Stability guard\"); lower run.time_step or use "
+            "numerics.stability_guard = \"adapt\"",
+            dt, d.indicator, limits_.bound, e.particle_id, e.damping_rate, e.stiffness_rate);
         if (policy_ == GuardPolicy::refuse) return msg;
         log_.warn("{}", msg);
     } else if (d.action == GuardDecision::Action::warn_close) {
         warned_ = d.indicator; // warn again only when it keeps rising
         log_.warn(
-            "time step {:.3g} s is close to the stability bound: dt*lambda = {:.3g} at particle {}",
-            dt, d.indicator, e.particle_id);
+            "time step {:.3g} s is close to the stability bound {:.3g}: max(dt*lambda, dt*omega) = "
+            "{:.3g} at particle {}",
+            dt, limits_.bound, d.indicator, e.particle_id);
     }
     return {};
 }

@@ -232,7 +232,8 @@ public:
     /// damping_rate: λ_max of M⁻¹R (R: the resistance of every dissipative law; explicit
     /// integrator only, 0 otherwise), stable for Δt λ < 2;
     /// stiffness_rate: sqrt(λ_max) of M_eff⁻¹K (K: contact springs, van der Waals, capillary
-    /// spring; M_eff = M, or M + Δt D for the semi-implicit kick), stable for Δt ω < 2.
+    /// spring; M_eff = M, or M + Δt D for the semi-implicit kick), stable for Δt ω < 2 (explicit,
+    /// undamped) or sqrt(2) to 2 (semi-implicit: docs/model.md "What the bound is").
     struct StabilityEstimate {
         double damping_rate = 0.0;     ///< [1/s]
         double stiffness_rate = 0.0;   ///< [rad/s]
@@ -363,12 +364,15 @@ private:
     double balance_clock_ = 0.0, balance_waited_ = 0.0;
 };
 
-/// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below 2.
+/// Stability indicator of a step: max(Δt λ_damping, Δt ω_stiffness); stable below the
+/// integrator's bound (GuardLimits::bound: 2 explicit, sqrt(2) semi-implicit).
 double stability_indicator(double dt, const Simulation::StabilityEstimate& e);
 
 /// The guard's policy (docs/model.md "Stability guard"): the largest step with Δt λ_damping ≤ 1.5
-/// and Δt ω_stiffness ≤ 1 (the first-order overdamped update stays monotone, an undamped contact
-/// gets ~6 steps per period), never above `cap`.
-double guarded_time_step(double cap, const Simulation::StabilityEstimate& e);
+/// and Δt ≤ critical_fraction × 2/ω_stiffness (numerics.critical_step_fraction; at 0.5, Δt ω ≤ 1:
+/// the first-order overdamped update stays monotone, an undamped contact gets ~6 steps per
+/// period), never above `cap`.
+double guarded_time_step(double cap, const Simulation::StabilityEstimate& e,
+                         double critical_fraction);
 
 } // namespace drydem

@@ -8,7 +8,7 @@
 //      contact lever arms), the capillary spring 2πσ s_cap of a particle cutting the level —
 //      limits every integrator, Δt ω_max < 2 with ω² = λ_max(M_eff⁻¹K), M_eff = M + s D (s = Δt
 //      for the semi-implicit kick, whose self-blocks D add to the inertia, 0 for the explicit
-//      one). The contact gaps are reduced by the skin: before the next rebuild a gap can close
+//      one; the semi-implicit bound falls to sqrt(2) for an overdamped mode, docs/model.md). The contact gaps are reduced by the skin: before the next rebuild a gap can close
 //      by at most that much, and the Hertz stiffness grows with the overlap.
 //      Van der Waals adds |dF/dh| = A R* / (3 h³) (h ≥ h_min) at the current gap. Its true
 //      stiffness is negative: linearised, the snap-in grows like exp(ω t) and velocity Verlet
@@ -311,12 +311,12 @@ double stability_indicator(double dt, const Simulation::StabilityEstimate& e) {
     return dt * std::max(e.damping_rate, e.stiffness_rate);
 }
 
-double guarded_time_step(double cap, const Simulation::StabilityEstimate& e) {
-    constexpr double damping_margin = 1.5;   // of the bound 2 (as the old guard)
-    constexpr double stiffness_margin = 1.0; // of the bound 2
+double guarded_time_step(double cap, const Simulation::StabilityEstimate& e,
+                         double critical_fraction) {
+    constexpr double damping_margin = 1.5; // of the bound 2 (as the old guard)
     double dt = cap;
     if (e.damping_rate > 0.0) dt = std::min(dt, damping_margin / e.damping_rate);
-    if (e.stiffness_rate > 0.0) dt = std::min(dt, stiffness_margin / e.stiffness_rate);
+    if (e.stiffness_rate > 0.0) dt = std::min(dt, critical_fraction * 2.0 / e.stiffness_rate);
     return dt;
 }
 
