@@ -8,6 +8,10 @@
 #   CASES  quick (examples/quick.toml, 3 mg/cm2, 40 x 40 um, ~2,000 particles; default)
 #          paper40 (the paper's 20.1 mg/cm2 recipe in a 40 x 40 um box, 13,382 particles; the
 #          explicit run takes about an hour on 2 cores)
+#          converged (examples/quick_converged.toml: the quick case at the converged setting of
+#          docs/validation.md, force-ratio scheme, e = 24, S = 4; both integrators with the step
+#          cap at 1e-10 s, so that the stability guard alone sets each one's step; ~1.5e6 steps,
+#          ~15 min each on 2 cores)
 # environment: DRYDEM (build/drydem), THREADS (2), SEED (config's), OUT (results/drying_bench), INTEGRATORS
 #   ("explicit semi_implicit")
 # Needs: build/drydem (README). Run on an otherwise idle machine.
@@ -25,7 +29,8 @@ for case in $cases; do
   case $case in
     quick) args=("$here/examples/quick.toml") ;;
     paper40) args=(--set film.box_x=40um --set film.box_y=40um) ;;
-    *) echo "unknown case $case (quick, paper40)" >&2; exit 2 ;;
+    converged) args=("$here/examples/quick_converged.toml" --set run.time_step=1e-10) ;;
+    *) echo "unknown case $case (quick, paper40, converged)" >&2; exit 2 ;;
   esac
   for integ in $integrators; do
     dir=$out/${case}_$integ
@@ -37,7 +42,7 @@ done
 /usr/bin/python3 - "$out" $cases <<'PY'
 import json, sys, os
 out, cases = sys.argv[1], sys.argv[2:]
-print(f"{'case':<8} {'integrator':<14} {'wall s':>8} {'proc s/wall s':>13} {'p-steps/s':>10} "
+print(f"{'case':<9} {'integrator':<14} {'wall s':>8} {'proc s/wall s':>13} {'p-steps/s':>10} "
       f"{'mean dt s':>10} {'steps':>9} {'thickness um':>12}  status")
 for case in cases:
     walls = {}
@@ -48,9 +53,9 @@ for case in cases:
         s = json.load(open(f))
         wall = s["wall_time_s"]; walls[integ] = wall
         thick = s.get("final_thickness_um")
-        print(f"{case:<8} {integ:<14} {wall:8.1f} {s['process_time_end_s'] / wall:13.4f} "
+        print(f"{case:<9} {integ:<14} {wall:8.1f} {s['process_time_end_s'] / wall:13.4f} "
               f"{s['particle_steps_per_s']:10.3g} {s.get('time_step_mean_s', 0):10.3g} {s['steps']:9d} "
               f"{(thick if thick is not None else float('nan')):12.3f}  {s['status']}")
     if len(walls) == 2:
-        print(f"{case:<8} ratio explicit/semi_implicit wall time: {walls['explicit'] / walls['semi_implicit']:.2f}")
+        print(f"{case:<9} ratio explicit/semi_implicit wall time: {walls['explicit'] / walls['semi_implicit']:.2f}")
 PY
