@@ -35,6 +35,15 @@
 #               candidate setting (force ratio, f = 9e3, k = 9e5, e = 7.5, S = 4) in a 40 um box:
 #               the film whose push number the paper's scheme distorts (~2e6 steps, 13,382
 #               particles: ~3.6 h on one core; checkpointed every 10 min, resumed by rerunning)
+#   q_paper_cap9 q_paper_f065
+#               the paper's scheme (q_paper) with the semi-implicit step cap at 1e-9 s instead of
+#               1e-10 s, so that the guard alone sets the step, at the critical-step fraction 0.5
+#               and 0.65 (docs/model.md "Stability guard")
+#   p20 p20_f065
+#               the paper's scheme on the 20.1 mg/cm2 recipe (examples/paper_20.1.toml) in a 40 um
+#               box, as the default semi-implicit step runs it (cap 1e-10 s), and with the cap at
+#               1e-9 s and the critical-step fraction 0.65 (the guard alone sets the step: ~2x
+#               fewer steps on the quick case): whether the main job may take the longer step
 #   archive:STEP
 #               the runs STEP has finished so far into the archive
 #
@@ -98,6 +107,11 @@ for step in "$@"; do
       --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100 \
       --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set film.box_x=40um --set film.box_y=40um ;;
+    q_paper_cap9) study q_paper_cap9 quick.toml --set run.time_step=1e-9 ;;
+    q_paper_f065) study q_paper_f065 quick.toml --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 ;;
+    p20) study p20 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um ;;
+    p20_f065) study p20_f065 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um \
+      --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac
