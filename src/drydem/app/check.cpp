@@ -8,6 +8,7 @@
 #include "drydem/drying/dimensionless_groups.hpp"
 #include "drydem/drying/scaling.hpp"
 #include "drydem/drying/stability_clusters.hpp"
+#include "drydem/drying/stability_guard.hpp"
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/setup/formulation.hpp"
 #include <fmt/format.h>
@@ -25,7 +26,11 @@ namespace {
 double print_guard_clusters(const Config& c, const FilmRecipe& r) {
     const auto expl = guard_on_reference_clusters(c, r, "explicit");
     const auto semi = guard_on_reference_clusters(c, r, "semi_implicit");
-    fmt::print("  stability guard on reference clusters (docs/model.md \"Stability guard\"):\n");
+    fmt::print(
+        "  stability guard on reference clusters (docs/model.md \"Stability guard\"; dt <= 1.5 / "
+        "damping and f 2 / stiff, critical-step fraction f = {:g} explicit, {:g} "
+        "semi-implicit):\n",
+        critical_fraction_for(c, "explicit"), critical_fraction_for(c, "semi_implicit"));
     fmt::print("    {:<34} {:>12} {:>12} {:>12} | {:>12} {:>12}\n", "cluster", "damping /s",
                "stiff rad/s", "explicit dt", "stiff rad/s", "semi-impl dt");
     for (std::size_t k = 0; k < expl.size(); ++k)
