@@ -41,6 +41,8 @@ SERIES = {
     # The paper's scheme with the guard alone setting the semi-implicit step (issue 30's main job).
     "paper's scheme: 1 default (cap 1e-10 s), 2 cap 1e-9 s, 3 cap 1e-9 s and f = 0.65": (
         "q_paper", [("q_paper", 1), ("q_paper_cap9", 2), ("q_paper_f065", 3)]),
+    "paper's scheme, 20.1 recipe in a 40 µm box: 1 default, 3 cap 1e-9 s and f = 0.65": (
+        "p20", [("p20", 1), ("p20_f065", 3)]),
     # The candidate for the converged setting, e = 7.5 and S = 4 (bench/convergence.sh), against
     # its neighbours in each knob, and the knobs not yet turned at it.
     "overlap knob e, at S = 4": ("q_e7.5_s4", [("q_e7.5_s4", 7.5), ("q_e24_s4", 24)]),
