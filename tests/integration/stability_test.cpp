@@ -14,6 +14,7 @@
 #include "drydem/core/error.hpp"
 #include "drydem/core/rng.hpp"
 #include "drydem/drying/scaling.hpp"
+#include "drydem/drying/stability_clusters.hpp"
 #include "drydem/engine/simulation.hpp"
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -237,18 +238,12 @@ Simulation semi_implicit_agglomerate(double dt) {
     return Simulation(fcc_agglomerate(), Box{40e-6, 40e-6}, all_models(), es);
 }
 
-/// The semi-implicit guard's fixed point Δt ω(Δt) = 2 f (ω of M + Δt D falls as Δt grows),
-/// iterated from a cap far above it as a run's guard settles.
+/// The semi-implicit guard's fixed point Δt ω(Δt) = 2 f, from a cap far above it, as a run's
+/// guard settles.
 double semi_implicit_fixed_point(double fraction) {
     Simulation probe = semi_implicit_agglomerate(1e-8);
-    double dt = 1e-8;
-    for (int it = 0; it < 60; ++it) {
-        probe.set_time_step(dt);
-        const double next = guarded_time_step(1e-8, probe.stability_estimate(), fraction);
-        if (std::abs(next - dt) <= 1e-4 * dt) break;
-        dt = next;
-    }
-    return dt;
+    Simulation::StabilityEstimate e;
+    return settle_guarded_step(probe, 1e-8, fraction, e);
 }
 
 /// The kinetic energy's largest value over `steps` after a relaxation, over its value then.

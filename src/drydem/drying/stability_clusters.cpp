@@ -61,31 +61,38 @@ Simulation cluster_simulation(const Config& c, const FilmRecipe& recipe, const R
                       make_drying_force_field(c, recipe, scale_parameters(c)), es);
 }
 
+double settle_guarded_step(Simulation& sim, double cap, double fraction,
+                           Simulation::StabilityEstimate& e) {
+    e = sim.stability_estimate();
+    double dt = guarded_time_step(cap, e, fraction);
+    if (sim.settings().integrator != Integrator::semi_implicit) return dt;
+    // The rate is that of M + Δt D, so it depends on the step; a run's guard re-estimates at
+    // every rebuild and settles where Δt ω(Δt) = 2 f. Iterated from the cap, the steps fall
+    // monotonically to that fixed point (ω falls as Δt grows).
+    for (int it = 0; it < 50; ++it) {
+        // A step that is not positive and finite is left for the caller to refuse.
+        if (!(dt > 0.0 && std::isfinite(dt)) || std::abs(dt - sim.settings().dt) <= 1e-3 * dt)
+            break;
+        sim.set_time_step(dt);
+        e = sim.stability_estimate();
+        dt = guarded_time_step(cap, e, fraction);
+    }
+    return dt;
+}
+
 std::vector<ClusterEstimate> guard_on_reference_clusters(const Config& c, const FilmRecipe& recipe,
                                                          const std::string& integrator) {
     Config ci = c;
     ci.integrator = integrator;
     const double overlap = 0.02 * 0.5 * recipe.species[std::size_t(recipe.cb_species())].diameter;
     const ScaledParameters scaled = scale_parameters(c);
+    const double fraction = critical_fraction_for(c, integrator);
     std::vector<ClusterEstimate> out;
     for (ReferenceCluster& k : reference_clusters(recipe, overlap)) {
         scale_cb_inertia(k.particles, recipe, scaled);
         Simulation sim = cluster_simulation(ci, recipe, k);
-        Simulation::StabilityEstimate e = sim.stability_estimate();
-        const double fraction = critical_fraction_for(c, integrator);
-        double dt = guarded_time_step(ci.time_step_cap(), e, fraction);
-        // Semi-implicit: the rate is that of M + Δt D, so it depends on the step; a run's guard
-        // re-estimates at every rebuild and settles where Δt ω(Δt) = 2 f (f the critical-step
-        // fraction, numerics.critical_step_fraction). Iterated here from the
-        // cap, the steps fall monotonically to that fixed point (ω falls as Δt grows).
-        for (int it = 0; integrator == "semi_implicit" && it < 50; ++it) {
-            // A step that is not positive and finite is left for the caller to refuse.
-            if (!(dt > 0.0 && std::isfinite(dt)) || std::abs(dt - sim.settings().dt) <= 1e-3 * dt)
-                break;
-            sim.set_time_step(dt);
-            e = sim.stability_estimate();
-            dt = guarded_time_step(ci.time_step_cap(), e, fraction);
-        }
+        Simulation::StabilityEstimate e;
+        const double dt = settle_guarded_step(sim, ci.time_step_cap(), fraction, e);
         out.push_back({k.name, e, dt});
     }
     return out;

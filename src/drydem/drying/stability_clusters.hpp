@@ -29,6 +29,13 @@ std::vector<ReferenceCluster> reference_clusters(const FilmRecipe& recipe, doubl
 Simulation cluster_simulation(const Config& c, const FilmRecipe& recipe, const ReferenceCluster& k,
                               double skin = -1.0);
 
+/// The step the guard settles at on `sim` from its present step (the cap): guarded_time_step of
+/// its estimate, and for the semi-implicit kick, whose rate depends on the step through
+/// M + Δt D, iterated to the fixed point Δt ω(Δt) = 2 f as a run's guard settles over its
+/// rebuilds. `e` receives the last estimate.
+double settle_guarded_step(Simulation& sim, double cap, double fraction,
+                           Simulation::StabilityEstimate& e);
+
 /// The guard's estimate on one reference cluster and the step it gives.
 struct ClusterEstimate {
     std::string name;
