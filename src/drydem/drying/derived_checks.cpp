@@ -225,11 +225,11 @@ void check_critical_step_fraction(const Config& c, const std::vector<std::string
                            "only with \"semi_implicit\" (docs/model.md \"Stability guard\")",
                            f, kExplicitCriticalFraction),
                {"numerics.critical_step_fraction", "numerics.integrator"}, bare);
-    if (c.integrator == "quasi_static" && f != 0.5)
+    if (c.integrator == "quasi_static" && f != 0.0)
         refuse(c,
                fmt::format("numerics.critical_step_fraction = {:g} with numerics.integrator = "
                            "\"quasi_static\": that step has no stability guard (numerics."
-                           "max_displacement sets it); leave the key at 0.5",
+                           "max_displacement sets it); leave the key at 0",
                            f),
                {"numerics.critical_step_fraction", "numerics.integrator"}, bare);
 }

@@ -63,8 +63,8 @@ inline constexpr double kExplicitCriticalFraction = 0.5;
 /// at most kExplicitCriticalFraction.
 inline double critical_fraction_for(const Config& c, std::string_view integrator) {
     return integrator == "semi_implicit"
-               ? c.critical_step_fraction
-               : std::min(c.critical_step_fraction, kExplicitCriticalFraction);
+               ? c.critical_step_fraction_value()
+               : std::min(c.critical_step_fraction_value(), kExplicitCriticalFraction);
 }
 /// The stability bound of GuardLimits for `integrator`.
 inline double stability_bound_for(std::string_view integrator) {
