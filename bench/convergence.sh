@@ -5,7 +5,8 @@
 #
 # Quick case (3 mg/cm2, 40 um box), examples/quick_force_ratio.toml: f = k/b = 9e3, b = 100,
 # e = 75 unless a step says otherwise.
-#   q_paper     the paper's scheme (examples/quick.toml): the reference the scheme is compared to
+#   q_paper     the paper's scheme (examples/quick.toml) with its step before 2026-12-07 (cap
+#               1e-10 s, f = 0.5): the reference the scheme is compared to
 #   q_base      the force-ratio setting itself
 #   q_e1 q_e2.4 q_e7.5 q_e24 q_e240
 #               overlap knob: scaling.stiffness_factor (overlap ~ (f/e)^(2/3)); with q_base two
@@ -41,7 +42,7 @@
 #               and 0.65 (docs/model.md "Stability guard")
 #   p20 p20_f065
 #               the paper's scheme on the 20.1 mg/cm2 recipe (examples/paper_20.1.toml) in a 40 um
-#               box, as the default semi-implicit step runs it (cap 1e-10 s), and with the cap at
+#               box, as the semi-implicit step ran it before 2026-12-07 (cap 1e-10 s), and with the cap at
 #               1e-9 s and the critical-step fraction 0.65 (the guard alone sets the step: ~2x
 #               fewer steps on the quick case): whether the main job may take the longer step
 #   archive:STEP
@@ -73,12 +74,15 @@ study() {  # $1 step, $2 example config, rest: drydem study arguments
 }
 
 fr=quick_force_ratio.toml
+# The paper scheme's semi-implicit step before 2026-12-07 (cap 1e-10 s, f = 0.5); since then its
+# default is the guard alone (cap 1e-9 s, f = 0.65), which q_paper_f065 and p20_f065 set.
+old_paper_step=(--set run.time_step=1e-10 --set numerics.critical_step_fraction=0.5)
 qs=(--set numerics.integrator=quasi_static --set scaling.time_factor=1 --set scaling.viscosity_reduction=1
     --set scaling.stiffness_factor=1)
 for step in "$@"; do
   echo "== $step ($(date -u +%H:%M))" >&2
   case $step in
-    q_paper) study q_paper quick.toml ;;
+    q_paper) study q_paper quick.toml "${old_paper_step[@]}" ;;
     q_base) study q_base $fr ;;
     q_e1) study q_e1 $fr --set scaling.stiffness_factor=1 ;;
     q_e2.4) study q_e2.4 $fr --set scaling.stiffness_factor=2.4 ;;
@@ -107,9 +111,9 @@ for step in "$@"; do
       --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100 \
       --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set film.box_x=40um --set film.box_y=40um ;;
-    q_paper_cap9) study q_paper_cap9 quick.toml --set run.time_step=1e-9 ;;
+    q_paper_cap9) study q_paper_cap9 quick.toml --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.5 ;;
     q_paper_f065) study q_paper_f065 quick.toml --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 ;;
-    p20) study p20 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um ;;
+    p20) study p20 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um "${old_paper_step[@]}" ;;
     p20_f065) study p20_f065 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um \
       --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
