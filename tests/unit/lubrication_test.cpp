@@ -36,6 +36,12 @@ TEST(Lubrication, ScalarFunctionsReferenceValues) {
     expect_rel(lubrication_x(0.2) * vinogradova_factor(0.2, 0.1), 0.91669, 1e-5);
     expect_rel(lubrication_x(0.5) * vinogradova_factor(0.5, 0.1), 0.49395, 1e-5);
     expect_rel(lubrication_x(1.0) * vinogradova_factor(1.0, 0.1), 0.21112, 1e-4);
+    // f* against its closed form with log1p, on both sides of the switch to ln((q + 6)/q) at q = 60
+    // and far beyond it (κ_c = 1e-6): within a few ulps.
+    for (const double q : {1.0 + 1e-9, 1.5, 3.0, 10.0, 59.999, 60.0, 1e3, 1e6}) {
+        const double exact = (q / 3.0) * ((1.0 + q / 6.0) * std::log1p(6.0 / q) - 1.0);
+        expect_rel(vinogradova_factor(q * 1e-6, 1e-6), exact, 1e-12);
+    }
     // r_L of M-4.1 (printed to 4 digits): CB with the five NCM classes, NCM 6.50 with 11.35 µm.
     EXPECT_DOUBLE_EQ(lubrication_radius(kR, kR), kR);
     const double r_ncm[] = {3.25e-6, 3.79e-6, 4.30e-6, 4.91e-6, 5.675e-6};

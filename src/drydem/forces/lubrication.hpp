@@ -49,12 +49,16 @@ inline double lubrication_x(double kappa) { return lubrication_x(kappa, std::log
 
 /// Vinogradova slip factor f* of Eq. 7 with h/h_c = κ/κ_c. At κ_c (the frozen range) it is the
 /// constant (1/3)[(7/6) ln 7 - 1] = 0.42341, which saves a logarithm per pair in contact (log
-/// evaluations dominate the cost of a dense packing).
+/// evaluations dominate the cost of a dense packing). ln(1 + 6/q) as ln((q + 6)/q) where that is
+/// as exact (one rounding of the quotient: relative error ~1e-16 q/6, so up to q = 60, which
+/// covers every pair at the default κ_c = 0.1): log costs 0.6× log1p (4.7 against 7.6 % of a
+/// dense main-job film's steps, perf).
 inline double vinogradova_factor(double kappa, double kappa_c) {
     constexpr double frozen = 0.42340950241039954;
     const double q = kappa / kappa_c;
     if (q == 1.0) return frozen;
-    return (q / 3.0) * ((1.0 + q / 6.0) * std::log1p(6.0 / q) - 1.0);
+    const double ln = q < 60.0 ? std::log((q + 6.0) / q) : std::log1p(6.0 / q);
+    return (q / 3.0) * ((1.0 + q / 6.0) * ln - 1.0);
 }
 
 /// The law's resistance (resistance.hpp pair form): a_n = 6πη r_L X f*, a_t = πη r_L L,
