@@ -39,10 +39,12 @@ SERIES = {
                                                                                        ("q_e24_s16", 16)]),
     "time step": ("q_base", [("q_base", 1.0), ("q_dt_half", 0.5)]),
     # The paper's scheme with the guard alone setting the semi-implicit step (issue 30's main job).
-    "paper's scheme: 1 default (cap 1e-10 s), 2 cap 1e-9 s, 3 cap 1e-9 s and f = 0.65": (
+    "paper's scheme: 1 cap 1e-10 s (the default before 2026-12-07), 2 cap 1e-9 s, 3 cap 1e-9 s and f = 0.65 (the default since)": (
         "q_paper", [("q_paper", 1), ("q_paper_cap9", 2), ("q_paper_f065", 3)]),
-    "paper's scheme, 20.1 recipe in a 40 µm box: 1 default, 3 cap 1e-9 s and f = 0.65": (
+    "paper's scheme, 20.1 recipe in a 40 µm box: 1 cap 1e-10 s, 3 cap 1e-9 s and f = 0.65": (
         "p20", [("p20", 1), ("p20_f065", 3)]),
+    "paper's scheme, 20.1 recipe in a 40 µm box, cap 1e-9 s and f = 0.65: skin 0.3 and 0.2 µm": (
+        "p20_f065", [("p20_f065", 0.3), ("p20_sk02", 0.2)]),
     # The candidate for the converged setting, e = 7.5 and S = 4 (bench/convergence.sh), against
     # its neighbours in each knob, and the knobs not yet turned at it.
     "overlap knob e, at S = 4": ("q_e7.5_s4", [("q_e7.5_s4", 7.5), ("q_e24_s4", 24)]),
@@ -61,7 +63,7 @@ SERIES = {
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
 STEPS = ["q_paper", "q_paper_cap9", "q_paper_f065", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s16",
-         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_x", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "p20", "p20_f065", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
+         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_x", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "p20", "p20_f065", "p20_sk02", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
 def leaves_level(run_dir: Path, after_s: float):
