@@ -12,8 +12,14 @@ drydem=$1 config=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=${OMPI_MCA_btl:-self,vader}
 mpi=(mpirun --oversubscribe -np 2)
+# The step pinned to the cap (1e-10 s, f = 0.5): a resume on ranks rebuilds every rank's list at
+# once, so a guard that sets the step (the default since 2026-12-07) re-estimates there and at
+# shifted rebuilds after it, and the continuation differs by more than round-off (1e-4 on this
+# film); at the cap the comparisons below see the state alone, where a lost contact history
+# shows as ~0.4 %.
 sets=(--set film.areal_loading=1.5mg/cm^2 --set output.checkpoint_every=0s
-      --set output.snapshot_every=2s --set analysis.at_end=false --threads 1 --quiet --no-plots)
+      --set output.snapshot_every=2s --set analysis.at_end=false --threads 1 --quiet --no-plots
+      --set run.time_step=1e-10 --set numerics.critical_step_fraction=0.5)
 fail() { echo "FAIL: $*"; exit 1; }
 value() { /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$1" "$2"; }
 # |a - b| <= tol |b|
