@@ -48,6 +48,11 @@
 #   p20_sk02    p20_f065 with the neighbour skin at 0.2 um instead of 0.3 um (the guard reduces every
 #               gap by the skin, so a thinner one lets it take longer steps; ~15 % less wall time
 #               on the quick case): whether the main job may take it
+#   q_paper_new q_paper_x
+#               the paper's scheme on the quick case at the semi-implicit default since 2026-12-07
+#               (cap 1e-9 s, f = 0.65, skin 0.2 um; pinned) and with the explicit reference
+#               integrator at its own defaults (cap 1e-11 s, skin 0.1 um): the default step
+#               checked against the reference on one build
 #   archive:STEP
 #               the runs STEP has finished so far into the archive
 #
@@ -80,6 +85,7 @@ fr=quick_force_ratio.toml
 # The paper scheme's semi-implicit step before 2026-12-07 (cap 1e-10 s, f = 0.5); since then its
 # default is the guard alone (cap 1e-9 s, f = 0.65), which q_paper_f065 and p20_f065 set.
 old_paper_step=(--set run.time_step=1e-10 --set numerics.critical_step_fraction=0.5)
+new_paper_step=(--set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 --set numerics.skin=0.2um)
 qs=(--set numerics.integrator=quasi_static --set scaling.time_factor=1 --set scaling.viscosity_reduction=1
     --set scaling.stiffness_factor=1)
 for step in "$@"; do
@@ -121,6 +127,8 @@ for step in "$@"; do
       --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 ;;
     p20_sk02) study p20_sk02 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um \
       --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 --set numerics.skin=0.2um ;;
+    q_paper_new) study q_paper_new quick.toml "${new_paper_step[@]}" ;;
+    q_paper_x) study q_paper_x quick.toml --set numerics.integrator=explicit ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac

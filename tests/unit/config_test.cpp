@@ -235,27 +235,28 @@ TEST(Config, ToTomlRoundTrip) {
 } // namespace
 
 // Minimum image needs a box side of at least twice the widest reach plus skin: for two 11.35 um
-// spheres d + r_L = 1.5 d (M-4.1), so 2 (17.025 + 0.3) um = 34.65 um with the semi-implicit skin; 20 um spheres need 60.6 um.
+// spheres d + r_L = 1.5 d (M-4.1), so 2 (17.025 + 0.2) um = 34.45 um with the paper scheme's
+// semi-implicit skin; 20 um spheres need 60.4 um.
 TEST(Config, BoxMustHoldTwiceTheLargestInteractionRange) {
     EXPECT_NO_THROW(load_config("", "t", {"film.box_x=36um", "film.box_y=36um"}));
     const std::string msg = input_error(
         "", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=50um", "film.box_y=80um"});
     EXPECT_NE(msg.find("film.box_x"), std::string::npos) << msg;
     EXPECT_NE(msg.find("50 um"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("60.6"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("60.4"), std::string::npos) << msg;
     EXPECT_NO_THROW(load_config(
         "", "t", {"formulation.ncm_diameters=[\"20 um\"]", "film.box_x=61um", "film.box_y=61um"}));
 }
 
 // The reach is the pair laws' (interaction_range), not a fixed 1.5 d: a van der Waals cutoff of
 // 10 um beyond contact makes two 11.35 um spheres reach 21.35 um, so a 40 um box (enough with the
-// default cutoff r_L) is refused: 2 (21.35 + 0.3) um = 43.3 um.
+// default cutoff r_L) is refused: 2 (21.35 + 0.2) um = 43.1 um.
 TEST(Config, BoxBoundFollowsTheForceLawsRange) {
     EXPECT_NO_THROW(load_config("", "t", {"film.box_x=40um", "film.box_y=40um"}));
     const std::string msg =
         input_error("", {"film.box_x=40um", "film.box_y=40um", "van_der_waals.cutoff=\"10 um\""});
     EXPECT_NE(msg.find("film.box_x"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("43.3"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("43.1"), std::string::npos) << msg;
     EXPECT_NE(msg.find("11.35 and 11.35 um"), std::string::npos) << msg;
 }
 
@@ -357,4 +358,9 @@ TEST(Config, DefaultStepDependsOnIntegratorAndScheme) {
     EXPECT_EQ(load_config("", "t", {"numerics.integrator=\"quasi_static\""})
                   .critical_step_fraction_value(),
               0.5);
+    // The skin: thinner where the guard alone sets the step, not for the calendering that follows.
+    EXPECT_EQ(paper.neighbor_skin(), 0.2e-6);
+    EXPECT_EQ(paper.neighbor_skin(true), 0.3e-6);
+    EXPECT_EQ(force_ratio.neighbor_skin(), 0.3e-6);
+    EXPECT_EQ(expl.neighbor_skin(), 0.1e-6);
 }

@@ -350,7 +350,7 @@ std::unique_ptr<Simulation> CalenderRun::make_simulation(ParticleStore particles
     EngineSettings es;
     es.integrator = Integrator::explicit_verlet;
     es.dt = largest_calender_step(c_);
-    es.skin = c_.neighbor_skin();
+    es.skin = c_.neighbor_skin(/*for_calendering=*/true);
     es.threads = c_.threads;
     es.sort_every = c_.sort_every;
     es.overlap_limit = c_.overlap_limit;

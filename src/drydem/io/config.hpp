@@ -104,10 +104,15 @@ struct Config {
     }
     /// The neighbour skin: skin, or with 0 the integrator's default (explicit 0.1 um, M-9.4;
     /// semi-implicit 0.3 um: at its ~10x longer steps a 0.1 um skin is used up within a few dozen
-    /// steps, and rebuilds and guard estimates would cost more than the wider list; docs/performance.md).
-    [[nodiscard]] double neighbor_skin() const {
+    /// steps, and rebuilds and guard estimates would cost more than the wider list;
+    /// docs/performance.md). Where the guard alone sets the semi-implicit step, 0.2 um: the guard
+    /// reduces every gap by the skin, so a thinner one lets it step longer, and the list is
+    /// shorter (the main job 15 % faster, the film within its seeds). A calendering run (explicit,
+    /// on the dried run's configuration) keeps 0.3 um after a semi-implicit drying.
+    [[nodiscard]] double neighbor_skin(bool for_calendering = false) const {
         if (skin > 0.0) return skin;
-        return integrator == "explicit" ? 0.1e-6 : 0.3e-6;
+        if (integrator == "explicit") return 0.1e-6;
+        return guard_alone_sets_step() && !for_calendering ? 0.2e-6 : 0.3e-6;
     }
 };
 
