@@ -73,7 +73,8 @@ struct Config {
 
     /// The semi-implicit kick in the paper's scheme runs with the guard alone (cap 1e-9 s, critical
     /// fraction 0.65): measured not to move the film on the quick case and the 20.1 recipe, 3 seeds
-    /// each, at ~1.9x fewer steps (docs/performance.md "The paper scheme's longer step"); the
+    /// each, at ~1.9x fewer steps (docs/performance.md "The guard alone at a critical-step fraction
+    /// of 0.65"); the
     /// force-ratio scheme's film moved at 0.65, so it keeps 1e-10 s and 0.5.
     [[nodiscard]] bool guard_alone_sets_step() const {
         return integrator == "semi_implicit" && scaling_scheme == "paper";
