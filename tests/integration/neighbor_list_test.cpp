@@ -5,11 +5,14 @@
 // determinism of the engine (M-9.1: fixed summation order for a fixed thread count).
 #include "drydem/drying/law_parameters.hpp"
 #include "drydem/drying/scaling.hpp"
+#include "drydem/core/rng.hpp"
 #include "drydem/engine/simulation.hpp"
+#include "drydem/io/particle_io.hpp"
 #include "drydem/setup/insertion.hpp"
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <utility>
 
@@ -137,4 +140,73 @@ TEST(NeighborList, DeterministicTrajectories) {
     EXPECT_LT(dv, 1e-9 * v_max);
     const double travel = v_max * 300 * 1e-11;
     EXPECT_LT(dx, 1e-9 * travel);
+}
+
+namespace {
+/// The peers' settled bed in the 30 µm box (tests/data/peers), as `drydem bench` sets it up:
+/// Hertz-Mindlin with history, gravity, Stokes drag, particles and substrate.
+Simulation settled_bed(Integrator integrator, bool near_list) {
+    const ParticleFile in = read_particles(std::filesystem::path(DRYDEM_SOURCE_DIR) / "tests" /
+                                           "data" / "peers" / "settled_30um.data");
+    ParticleStore p;
+    int types = 0;
+    for (const ParticleRecord& r : in.particles) {
+        Vec3 x = r.position;
+        x.x -= in.xlo.value_or(0.0);
+        x.y -= in.ylo.value_or(0.0);
+        p.add(r.id, std::uint8_t(r.type - 1), r.radius, r.density, x);
+        types = std::max(types, r.type);
+    }
+    ForceField ff = uniform_contact_force_field(types, 1e10, 0.3, 0.5, 0.8);
+    ff.set_body_law<GravityBuoyancyLaw>({9.81e6, 0.0});
+    ff.set_body_law<StokesDragLaw>({0.18, false});
+    EngineSettings es;
+    es.dt = 2e-10;
+    es.skin = 0.3e-6;
+    es.threads = 2;
+    es.integrator = integrator;
+    es.near_list = near_list;
+    return Simulation(std::move(p), Box{*in.lx, *in.ly}, ff, es);
+}
+} // namespace
+
+// M-9.4, near_list.hpp: walking the near list adds the same forces in the same order as walking
+// the whole neighbour list, so the trajectories agree to the bit, while the near list is built
+// again as the particles move, switched off when they move fast (random kicks of 20 m/s) and on
+// again when they have settled; explicit and semi-implicit (self-blocks) pair loops.
+TEST(NearList, SameTrajectoryAsTheWholeList) {
+    for (const Integrator integrator : {Integrator::explicit_verlet, Integrator::semi_implicit}) {
+        Simulation near = settled_bed(integrator, true), whole = settled_bed(integrator, false);
+        Rng rng(11);
+        bool seen_on = false, seen_off = false;
+        for (int s = 0; s < 1000; ++s) {
+            if (s % 300 == 150) {
+                for (std::size_t i = 0; i < near.particles().size(); ++i) {
+                    const Vec3 kick{rng.uniform(-20, 20), rng.uniform(-20, 20),
+                                    rng.uniform(-20, 20)};
+                    near.particles_mut().velocity[i] += kick;
+                    whole.particles_mut().velocity[i] += kick;
+                }
+            }
+            near.step();
+            whole.step();
+            seen_on = seen_on || near.near_pairs().on();
+            seen_off = seen_off || !near.near_pairs().on();
+            EXPECT_FALSE(whole.near_pairs().on());
+        }
+        EXPECT_TRUE(seen_on);
+        EXPECT_TRUE(seen_off);
+        EXPECT_GE(near.near_pairs().builds(), 5u);
+        EXPECT_LT(near.near_pairs().pairs(), near.neighbors().pairs());
+        const ParticleStore &a = near.particles(), &b = whole.particles();
+        ASSERT_EQ(a.id, b.id);
+        std::size_t bit_diffs = 0;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            bit_diffs += a.position[i].x != b.position[i].x || a.position[i].y != b.position[i].y ||
+                         a.position[i].z != b.position[i].z || a.velocity[i].x != b.velocity[i].x ||
+                         a.velocity[i].y != b.velocity[i].y || a.velocity[i].z != b.velocity[i].z ||
+                         a.omega[i].x != b.omega[i].x || a.omega[i].z != b.omega[i].z;
+        EXPECT_EQ(bit_diffs, 0u) << "integrator " << int(integrator);
+        EXPECT_GT(near.stats().contacts, 1000u);
+    }
 }

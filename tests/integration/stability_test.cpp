@@ -283,7 +283,10 @@ TEST(Stability, SemiImplicitOverdampedBoundIsBelowTwo) {
     bool threw = false;
     double growth = 0.0;
     try {
-        growth = energy_growth(sim, 3000);
+        // The unstable mode grows from round-off: it blew up within 3,000 steps, and
+        // after ~5,500 once a change elsewhere in the pair loop moved the round-off (the
+        // compiler's choice of fused multiply-adds); the window leaves room for that.
+        growth = energy_growth(sim, 10000);
     } catch (const RunError&) {
         threw = true;
     }

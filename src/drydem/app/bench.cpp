@@ -36,11 +36,12 @@ int run_bench(const BenchOptions& o) {
     es.dt = o.dt;
     es.skin = o.skin;
     es.threads = o.threads;
+    es.near_list = !o.whole_list;
     es.overlap_limit = 1.0;
     Simulation sim(std::move(p), box, ff, es);
     const std::size_t n = sim.particles().size();
     sim.run(o.warmup);
-    const auto builds0 = sim.neighbors().builds();
+    const auto builds0 = sim.neighbors().builds(), near_builds0 = sim.near_pairs().builds();
     const PhaseTimes before = sim.phase_times();
     const auto t0 = std::chrono::steady_clock::now();
     sim.run(o.steps);
@@ -53,10 +54,12 @@ int run_bench(const BenchOptions& o) {
         "{{\"code\": \"drydem\", \"threads\": {}, \"particles\": {}, \"steps\": {}, "
         "\"seconds\": {:.4f}, \"ms_per_step\": {:.4f}, \"particle_steps_per_s\": {:.5g}, "
         "\"contacts_per_particle\": {:.4f}, \"neighbor_builds\": {}, \"pairs_in_list\": {}, "
+        "\"near_builds\": {}, \"pairs_near\": {}, "
         "\"seconds_pair\": {:.4f}, \"seconds_neighbor\": {:.4f}, \"seconds_integrate\": {:.4f}}}\n",
         sim.threads(), n, o.steps, wall, 1e3 * wall / double(o.steps), rate,
         2.0 * double(sim.stats().contacts) / double(n), sim.neighbors().builds() - builds0,
-        sim.neighbors().pairs(), after.pair - before.pair, after.neighbor - before.neighbor,
+        sim.neighbors().pairs(), sim.near_pairs().builds() - near_builds0, sim.near_pairs().pairs(),
+        after.pair - before.pair, after.neighbor - before.neighbor,
         after.integrate - before.integrate);
     return 0;
 }

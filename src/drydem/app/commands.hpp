@@ -21,6 +21,7 @@ struct BenchOptions {
     int threads = 1;
     double youngs_modulus = 1e10, poisson_ratio = 0.3, restitution = 0.5, friction = 0.8;
     double viscosity = 0.18, gravity = 9.81e6, dt = 2e-10, skin = 0.3e-6;
+    bool whole_list = false; ///< no near list (EngineSettings::near_list)
 };
 int run_bench(const BenchOptions& o);
 

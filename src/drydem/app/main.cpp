@@ -315,6 +315,8 @@ void declare_analyze_bench(CommandLine& a) {
     a.bench->add_option("--steps", a.bench_opt.steps, "timed steps");
     a.bench->add_option("--warmup", a.bench_opt.warmup, "untimed warm-up steps");
     a.bench->add_option("--threads", a.bench_opt.threads, "OpenMP threads");
+    a.bench->add_flag("--whole-list", a.bench_opt.whole_list,
+                      "walk the whole neighbour list every step, no near list (A/B timing)");
 }
 
 /// The command-line integers, checked as the issue of hostile input asks (no sign, no overflow,

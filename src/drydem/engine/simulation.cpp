@@ -14,7 +14,7 @@ namespace drydem {
 Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(particles)), body_state_(p_.size()), box_(box), ff_(std::move(forces)),
       settings_(settings), nl_(settings.skin, settings.threads),
-      liquid_level_(settings.initial_liquid_level) {
+      near_(settings.skin, settings.near_list), liquid_level_(settings.initial_liquid_level) {
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
     substrate_on_ = ff_.substrate_on();
     for (std::size_t i = 0; i < p_.size(); ++i) box_.wrap(p_.position[i]);
@@ -30,8 +30,8 @@ Simulation::Simulation(ParticleStore particles, Box box, ForceField forces, Engi
 Simulation::Simulation(EngineState state, Box box, ForceField forces, EngineSettings settings)
     : p_(std::move(state.particles)), body_state_(std::move(state.body_state)), box_(box),
       ff_(std::move(forces)), settings_(settings), nl_(settings.skin, settings.threads),
-      step_(state.step), time_(state.time), liquid_level_(state.liquid_level),
-      force_rebuild_(state.force_rebuild), stats_(state.stats),
+      near_(settings.skin, settings.near_list), step_(state.step), time_(state.time),
+      liquid_level_(state.liquid_level), force_rebuild_(state.force_rebuild), stats_(state.stats),
       rebuilds_since_sort_(state.rebuilds_since_sort) {
     settings_.dt = state.dt;
     threads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
@@ -554,10 +554,12 @@ void Simulation::rebuild_neighbors() {
         nl_.build(p_, box_, range, owner_range, sort);
     }
     force_rebuild_ = false;
+    near_.neighbors_rebuilt(step_);
     times_.neighbor += omp_get_wtime() - t0;
 }
 
 void Simulation::compute_forces() {
+    near_.invalidate(); // the particles may have been moved outside step()
     if (force_rebuild_) rebuild_neighbors();
     if (quasi_static()) return assemble_quasi_static();
     std::size_t wall_contacts = 0;
@@ -637,13 +639,20 @@ void Simulation::implicit_acceleration(std::size_t i) {
 
 void Simulation::pair_forces(std::size_t wall_contacts, double wall_overlap) {
     if (force_rebuild_) rebuild_neighbors();
+    if (near_.on() && !near_.valid()) {
+        const double t_near = omp_get_wtime();
+        near_.build(nl_, p_, box_, threads_, step_);
+        times_.neighbor += omp_get_wtime() - t_near;
+    }
     const double t0 = omp_get_wtime();
     std::size_t contacts = 0;
     double max_overlap = wall_overlap;
     if (semi_implicit())
-        pair_loop<true>(contacts, max_overlap);
+        near_.on() ? pair_loop<true, NearList>(near_, contacts, max_overlap)
+                   : pair_loop<true, NeighborList>(nl_, contacts, max_overlap);
     else
-        pair_loop<false>(contacts, max_overlap);
+        near_.on() ? pair_loop<false, NearList>(near_, contacts, max_overlap)
+                   : pair_loop<false, NeighborList>(nl_, contacts, max_overlap);
     if (halo_) {
         contacts = halo_->all_sum(std::uint64_t(contacts));
         wall_contacts = halo_->all_sum(std::uint64_t(wall_contacts));
@@ -663,8 +672,8 @@ namespace {
 // changes nothing it can see) and deletes the call. That happened when this was split out of the
 // pair loop (2cd0e8a): no prefetch was left in the binary and the pair loop of a dense 20.1
 // mg/cm2 film took 18 % longer (docs/performance.md, "Cost of the pair-law contract").
-template <bool SelfBlocks>
-[[gnu::always_inline]] inline void prefetch_partners(const NeighborList& nl, const ParticleStore& p,
+template <bool SelfBlocks, class List>
+[[gnu::always_inline]] inline void prefetch_partners(const List& nl, const ParticleStore& p,
                                                      const SelfBlock* block, std::uint32_t s,
                                                      std::uint32_t row_end) {
     if (s + 2 < row_end) {
@@ -685,6 +694,10 @@ template <bool SelfBlocks>
         }
     }
 }
+
+// The slot of the neighbour list that entry k of the walked list names.
+std::uint32_t slot_of(const NearList& l, std::uint32_t k) { return l.slot(k); }
+std::uint32_t slot_of(const NeighborList&, std::uint32_t k) { return k; }
 } // namespace
 
 // The rows [lo, hi) of thread t hold an equal share of the list's slots (plus one per row), not
@@ -729,8 +742,8 @@ void Simulation::add_cross_range(std::size_t t, std::size_t lo, std::size_t hi) 
     }
 }
 
-template <bool SelfBlocks>
-void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
+template <bool SelfBlocks, class List>
+void Simulation::pair_loop(const List& list, std::size_t& contacts_out, double& max_overlap_out) {
     const double dt = settings_.dt;
     std::size_t contacts = 0;
     double max_overlap = max_overlap_out;
@@ -772,10 +785,10 @@ void Simulation::pair_loop(std::size_t& contacts_out, double& max_overlap_out) {
             const PairParams* row = pair_table + std::size_t(p.species[i]) * species_count;
             Vec3 fi{}, ti{};
             SelfBlock di{};
-            const std::uint32_t row_end = nl_.end(i);
-            for (std::uint32_t s = nl_.begin(i); s < row_end; ++s) {
-                const std::uint32_t j = nl_.partner(s);
-                prefetch_partners<SelfBlocks>(nl_, p, block, s, row_end);
+            const std::uint32_t row_end = list.end(i);
+            for (std::uint32_t k = list.begin(i); k < row_end; ++k) {
+                const std::uint32_t j = list.partner(k), s = slot_of(list, k);
+                prefetch_partners<SelfBlocks>(list, p, block, k, row_end);
                 const Vec3 d = box_.minimum_image(xi, p.position[j]);
                 const double dist2 = norm2(d);
                 PairState& state = nl_.state(s);
@@ -851,15 +864,17 @@ void Simulation::step() {
     const bool semi = semi_implicit();
     ParticleStore& p = p_;
     const auto& x_build = nl_.positions_at_build();
+    // Displacements since the near list's build (near_list.hpp), when it has one.
+    const Vec3* x_near = near_.valid() ? near_.positions_at_build().data() : nullptr;
     double t_start = omp_get_wtime();
-    double max_disp2 = 0.0, wall_overlap = 0.0;
+    double max_disp2 = 0.0, max_near2 = 0.0, wall_overlap = 0.0;
     std::size_t wall_contacts = 0;
     // Step 3 (level part): the liquid level at the new time, needed by the particle forces.
     if (level_at_) liquid_level_ = level_at_(time_ + dt);
         // M-9.1 steps 1-2: half kick, drift, wrap; track the largest displacement since the build.
         // The particle forces (substrate, drag, weight, capillary) need only this particle's new
         // state, so they are computed in the same pass (step 4, first half).
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_disp2, wall_overlap) reduction(+ : wall_contacts)
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : max_disp2, max_near2, wall_overlap) reduction(+ : wall_contacts)
     for (std::size_t i = 0; i < n; ++i) {
         if (semi) {
             p.velocity[i] += half * accel_[i];
@@ -871,16 +886,22 @@ void Simulation::step() {
         p.position[i] += dt * p.velocity[i];
         box_.wrap(p.position[i]);
         max_disp2 = std::max(max_disp2, norm2(box_.minimum_image(x_build[i], p.position[i])));
+        if (x_near)
+            max_near2 = std::max(max_near2, norm2(box_.minimum_image(x_near[i], p.position[i])));
         body_forces(i, wall_contacts, wall_overlap);
     }
     time_ += dt;
     ++step_;
     // Step 3: neighbor list check (a rebuild may re-sort the particles, forces included). Under a
     // decomposition every rank rebuilds when one must; otherwise the ghosts follow their owners.
-    if (halo_) max_disp2 = halo_->all_max(max_disp2);
+    if (halo_) {
+        max_disp2 = halo_->all_max(max_disp2);
+        max_near2 = halo_->all_max(max_near2);
+    }
     if (!std::isfinite(max_disp2)) non_finite_ = true;
     if (non_finite_) check_health();
     if (nl_.needs_rebuild(max_disp2)) force_rebuild_ = true;
+    if (x_near) near_.moved(max_near2, step_);
     if (halo_) {
         clear_ghost_forces();
         if (!force_rebuild_) halo_->update_ghosts(p_);

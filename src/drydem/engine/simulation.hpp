@@ -7,6 +7,7 @@
 #include "drydem/engine/bond_network.hpp"
 #include "drydem/engine/quasi_static.hpp"
 #include "drydem/forces/force_field.hpp"
+#include "drydem/neighbor/near_list.hpp"
 #include "drydem/neighbor/neighbor_list.hpp"
 #include "drydem/parallel/halo.hpp"
 #include <array>
@@ -45,6 +46,9 @@ struct EngineSettings {
     /// where it runs every few dozen steps (calendering, whose extrusion rebuilds the list). The
     /// vector is not in the checkpoint, so a run that resumes must leave it off.
     bool guard_warm_start = false;
+    /// The pair loop walks a near list where that pays (near_list.hpp); false: always the whole
+    /// neighbour list (the same forces to the bit; tests and A/B timings).
+    bool near_list = true;
 };
 
 /// Wall-clock seconds spent per phase since construction (the summary's timing breakdown).
@@ -181,6 +185,8 @@ public:
     [[nodiscard]] const ForceField& forces() const { return ff_; }
     [[nodiscard]] const EngineSettings& settings() const { return settings_; }
     [[nodiscard]] const NeighborList& neighbors() const { return nl_; }
+    /// The slots the pair loop walks (near_list.hpp).
+    [[nodiscard]] const NearList& near_pairs() const { return near_; }
     [[nodiscard]] double time() const { return time_; }
     [[nodiscard]] std::int64_t step_count() const { return step_; }
     /// Changes Δt between steps (the stability guard lowers it in dense packings, M-9.2).
@@ -279,8 +285,9 @@ private:
     void pair_forces(std::size_t wall_contacts, double wall_overlap);
     /// The bonds' forces added to the store (after the pair forces); breaks the bonds that fail.
     void bond_forces();
-    template <bool SelfBlocks>
-    void pair_loop(std::size_t& contacts, double& max_overlap);
+    /// The pair loop over `list`: the near list or the neighbour list itself (near_list.hpp).
+    template <bool SelfBlocks, class List>
+    void pair_loop(const List& list, std::size_t& contacts, double& max_overlap);
     /// First row of thread t's share of the list (rows weighted by their slots + 1), t < parts.
     [[nodiscard]] std::size_t row_split(std::size_t t, std::size_t parts) const;
     /// Thread t adds, for its rows [lo, hi), what the other threads wrote across (thread order).
@@ -320,6 +327,7 @@ private:
     ForceField ff_;
     EngineSettings settings_;
     NeighborList nl_;
+    NearList near_; ///< the slots of nl_ within reach + its skin: what the pair loop walks
     int threads_ = 1;
     std::int64_t step_ = 0;
     double time_ = 0.0;
