@@ -7,7 +7,7 @@
 #include "drydem/drying/scaling.hpp"
 #include "drydem/core/rng.hpp"
 #include "drydem/engine/simulation.hpp"
-#include "drydem/io/particle_io.hpp"
+#include "drydem/engine/peer_bed.hpp"
 #include "drydem/setup/insertion.hpp"
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -146,27 +146,15 @@ namespace {
 /// The peers' settled bed in the 30 µm box (tests/data/peers), as `drydem bench` sets it up:
 /// Hertz-Mindlin with history, gravity, Stokes drag, particles and substrate.
 Simulation settled_bed(Integrator integrator, bool near_list) {
-    const ParticleFile in = read_particles(std::filesystem::path(DRYDEM_SOURCE_DIR) / "tests" /
-                                           "data" / "peers" / "settled_30um.data");
-    ParticleStore p;
-    int types = 0;
-    for (const ParticleRecord& r : in.particles) {
-        Vec3 x = r.position;
-        x.x -= in.xlo.value_or(0.0);
-        x.y -= in.ylo.value_or(0.0);
-        p.add(r.id, std::uint8_t(r.type - 1), r.radius, r.density, x);
-        types = std::max(types, r.type);
-    }
-    ForceField ff = uniform_contact_force_field(types, 1e10, 0.3, 0.5, 0.8);
-    ff.set_body_law<GravityBuoyancyLaw>({9.81e6, 0.0});
-    ff.set_body_law<StokesDragLaw>({0.18, false});
+    PeerBed bed = read_peer_bed(std::filesystem::path(DRYDEM_SOURCE_DIR) / "tests" / "data" /
+                                "peers" / "settled_30um.data");
     EngineSettings es;
     es.dt = 2e-10;
     es.skin = 0.3e-6;
     es.threads = 2;
     es.integrator = integrator;
     es.near_list = near_list;
-    return Simulation(std::move(p), Box{*in.lx, *in.ly}, ff, es);
+    return Simulation(std::move(bed.particles), bed.box, bed.forces, es);
 }
 } // namespace
 

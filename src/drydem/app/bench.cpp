@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
-// `drydem bench DATA`: the peers' granular benchmark (bench/peer_bench.sh, README "Performance") in DryDEM: the
-// settled bed from rest, Hertz-Mindlin with tangential history (E = 1e10 Pa, ν = 0.3, e = 0.5,
-// μ = 0.8, particles and wall), gravity 9.81e6 m/s², per-type Stokes drag 6πηr (translation only,
-// like `fix viscous`), dt = 2e-10 s, skin 0.3 um; `warmup` untimed then `steps` timed steps.
+// `drydem bench DATA`: the peers' granular benchmark (bench/peer_bench.sh, README "Performance") in
+// DryDEM: the settled bed from rest with the benchmark's physics (engine/peer_bed.hpp), dt = 2e-10
+// s, skin 0.3 um; `warmup` untimed then `steps` timed steps.
 #include "drydem/app/commands.hpp"
 #include "drydem/core/error.hpp"
 #include "drydem/engine/simulation.hpp"
-#include "drydem/io/particle_io.hpp"
+#include "drydem/engine/peer_bed.hpp"
 #include <fmt/format.h>
 #include <algorithm>
 #include <chrono>
@@ -15,30 +14,14 @@
 namespace drydem::app {
 
 int run_bench(const BenchOptions& o) {
-    const ParticleFile in = read_particles(o.data);
-    if (!in.lx || !in.ly)
-        throw InputError(fmt::format("bench: {} has no box (need a LAMMPS data file)", o.data));
-    const Box box{*in.lx, *in.ly};
-    ParticleStore p;
-    int types = 0;
-    for (const ParticleRecord& r : in.particles) {
-        Vec3 x = r.position;
-        x.x -= in.xlo.value_or(0.0);
-        x.y -= in.ylo.value_or(0.0);
-        p.add(r.id, std::uint8_t(r.type - 1), r.radius, r.density, x);
-        types = std::max(types, r.type);
-    }
-    ForceField ff = uniform_contact_force_field(types, o.youngs_modulus, o.poisson_ratio,
-                                                o.restitution, o.friction);
-    ff.set_body_law<GravityBuoyancyLaw>({o.gravity, 0.0});
-    ff.set_body_law<StokesDragLaw>({o.viscosity, false});
+    PeerBed bed = read_peer_bed(o.data, o.physics);
     EngineSettings es;
     es.dt = o.dt;
     es.skin = o.skin;
     es.threads = o.threads;
     es.near_list = !o.whole_list;
     es.overlap_limit = 1.0;
-    Simulation sim(std::move(p), box, ff, es);
+    Simulation sim(std::move(bed.particles), bed.box, bed.forces, es);
     const std::size_t n = sim.particles().size();
     sim.run(o.warmup);
     const auto builds0 = sim.neighbors().builds(), near_builds0 = sim.near_pairs().builds();

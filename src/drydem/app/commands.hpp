@@ -3,6 +3,7 @@
 #include "drydem/analysis/analyze.hpp"
 #include "drydem/drying/drying_run.hpp"
 #include "drydem/io/config.hpp"
+#include "drydem/engine/peer_bed.hpp"
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -19,8 +20,8 @@ struct BenchOptions {
     std::string data;
     std::int64_t warmup = 200, steps = 2000;
     int threads = 1;
-    double youngs_modulus = 1e10, poisson_ratio = 0.3, restitution = 0.5, friction = 0.8;
-    double viscosity = 0.18, gravity = 9.81e6, dt = 2e-10, skin = 0.3e-6;
+    PeerBedPhysics physics;
+    double dt = 2e-10, skin = 0.3e-6;
     bool whole_list = false; ///< no near list (EngineSettings::near_list)
 };
 int run_bench(const BenchOptions& o);
