@@ -310,7 +310,7 @@ void Simulation::remove_particles(const std::vector<std::size_t>& which) {
     for (std::size_t k = 0; k < order.size(); ++k) body[k] = body_state_[order[k]];
     body_state_.swap(body);
     allocate_integrator();
-    force_rebuild_ = true;
+    invalidate_neighbors();
 }
 
 EngineState Simulation::state() const {
@@ -865,7 +865,9 @@ void Simulation::step() {
     ParticleStore& p = p_;
     const auto& x_build = nl_.positions_at_build();
     // Displacements since the near list's build (near_list.hpp), when it has one.
-    const Vec3* x_near = near_.valid() ? near_.positions_at_build().data() : nullptr;
+    const Vec3* x_near = near_.valid() && near_.positions_at_build().size() == p.size()
+                             ? near_.positions_at_build().data()
+                             : nullptr;
     double t_start = omp_get_wtime();
     double max_disp2 = 0.0, max_near2 = 0.0, wall_overlap = 0.0;
     std::size_t wall_contacts = 0;

@@ -180,7 +180,10 @@ public:
     [[nodiscard]] const std::vector<BodyState>& body_states() const { return body_state_; }
     /// Mutable access for set-up and tests; call invalidate_neighbors() after moving particles.
     [[nodiscard]] ParticleStore& particles_mut() { return p_; }
-    void invalidate_neighbors() { force_rebuild_ = true; }
+    void invalidate_neighbors() {
+        force_rebuild_ = true;
+        near_.invalidate();
+    }
     [[nodiscard]] const Box& box() const { return box_; }
     [[nodiscard]] const ForceField& forces() const { return ff_; }
     [[nodiscard]] const EngineSettings& settings() const { return settings_; }
