@@ -4,7 +4,7 @@
 # user's; a folder without a run is never cleared; a folder locked by another run is refused; a
 # quote in run.name still resumes (config.toml written by the TOML library); a run refused by the
 # stability guard at its start writes summary.json with "failed" (exit 1); `dryer`, `analyze` and
-# `study` protect their -o folders the same way.
+# `study` protect their -o folders the same way; `calender --resume` continues only a calendering.
 # usage: output_folder.sh DRYDEM WORKDIR
 set -u
 drydem=$1 work=$2
@@ -95,4 +95,18 @@ expect 1 "stability bound" -- run -o "$refused" --set 'numerics.stability_guard=
   --set run.time_step=1e-6s "${quick[@]}"
 grep -q '"status": "failed"' "$refused/summary.json" || fail "no failed summary.json after refuse"
 grep -q 'stability bound' "$refused/summary.json" || fail "summary.json does not say why"
+# 7. calender --resume continues a calendering's checkpoint, with nothing else on the line;
+# run --resume refuses a calendering's checkpoint and calender --resume a drying run's.
+dried="$work/dried"
+mkdir -p "$dried" && cp "$old/config.toml" "$old/final.csv" "$dried/"
+cal="$work/calendered"
+expect 1 "drydem calender --resume" -- calender "$dried" -o "$cal" --stop-after-steps 5 \
+  --threads 1 --quiet --no-plots
+[[ -f "$cal/checkpoint/state.bin" ]] || fail "a stopped calendering left no checkpoint"
+expect 2 "holds a calendering run's checkpoint" -- run --resume "$cal" --quiet --no-plots
+expect 2 "holds a drying run's checkpoint" -- calender --resume "$old" --quiet --no-plots
+expect 2 "not allowed with it" -- calender "$dried" --resume "$cal" --quiet --no-plots
+expect 2 "give RUN_DIR" -- calender --quiet --no-plots
+expect 1 "stopped after step 12" -- calender --resume "$cal" --stop-after-steps 12 --quiet --no-plots
+grep -q "resuming the calendering of .* at step 5 " "$cal/log.txt" || fail "the calendering did not resume at step 5"
 exit $status

@@ -11,6 +11,7 @@
 #include "drydem/core/error.hpp"
 #include "drydem/drying/derived_checks.hpp"
 #include "drydem/drying/law_parameters.hpp"
+#include "drydem/drying/run_checkpoint.hpp"
 #include "drydem/io/particle_io.hpp"
 #include "drydem/setup/formulation.hpp"
 #include "drydem/setup/insertion.hpp"
@@ -381,6 +382,71 @@ TEST(CalenderEndToEnd, ExtrudedAgglomeratesPassOnTheirSolidAndLeave) {
                   b["left_with_extruded"]["broken"].get<double>(),
               b["broken"].get<double>());
     EXPECT_EQ(column(out / "compaction.csv", "bonds_broken").back(), b["broken"].get<double>());
+}
+
+std::string file_text(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(CalenderEndToEnd, AStoppedRunResumesFromItsCheckpointBitForBit) {
+    // The extrusion case (bonds, agglomerates leaving, the guard's warm start, both FIRE
+    // relaxations, the plate), once straight through and once stopped twice and resumed twice:
+    // the same film, curve and snapshots to the byte.
+    const Config c =
+        small_film({"calendering.target_pressure=5MPa", "calendering.cb_yield_pressure=1MPa",
+                    "numerics.overlap_limit=1.5", "calendering.cb_extrusion=true"});
+    const auto [run, whole] = folders_for(c);
+    const CalenderResult straight = run_calendering(c, {run, whole, true, false, std::nullopt});
+    ASSERT_TRUE(straight.completed) << straight.error;
+    EXPECT_FALSE(straight.resumable);
+
+    const fs::path out = whole.parent_path() / "stopped";
+    fs::create_directories(out);
+    // Stopped while loading, unloading and relaxing (~2,000 and ~40 steps of ~15,000 the last two;
+    // the inserted film settles at once).
+    std::vector<int> stopped_in;
+    for (const std::int64_t stop :
+         {straight.steps / 3, straight.steps - 1000, straight.steps - 10}) {
+        CalenderOptions o{run, out, true, false, stop};
+        o.resume = stop != straight.steps / 3;
+        const CalenderResult r = run_calendering(c, o);
+        ASSERT_FALSE(r.completed);
+        EXPECT_TRUE(r.resumable);
+        EXPECT_EQ(r.steps, stop);
+        EXPECT_EQ(summary_of(out)["status"], "failed");
+        RunCheckpoint ck = read_run_checkpoint(out);
+        ck.progress("calender.phase", stopped_in.emplace_back());
+    }
+    EXPECT_EQ(stopped_in, (std::vector<int>{1, 3, 4})) << "load, unload, relax";
+    // The CLI's path: the config and the drying run come from the checkpoint.
+    const CalenderResume resume = read_calender_resume(out);
+    EXPECT_EQ(resume.run_dir, fs::absolute(run));
+    EXPECT_EQ(resume.config.threads, c.threads);
+    CalenderOptions o{resume.run_dir, out, true, false, std::nullopt};
+    o.resume = true;
+    const CalenderResult resumed = run_calendering(resume.config, o);
+    ASSERT_TRUE(resumed.completed) << resumed.error;
+    EXPECT_EQ(resumed.steps, straight.steps);
+    for (const char* f :
+         {"final.csv", "compaction.csv", "particle_bonds.csv", "snapshots/dump.lammpstrj"})
+        EXPECT_EQ(file_text(out / f), file_text(whole / f)) << f;
+    const nlohmann::json a = summary_of(whole), b = summary_of(out);
+    for (const char* k : {"status", "settled_film", "peak", "unloaded", "bonds", "cb_extrusion",
+                          "compaction_fit", "max_inertial_number", "steps"})
+        EXPECT_EQ(a[k].dump(), b[k].dump()) << k;
+    for (std::size_t k = 0; k < a["passes"].size(); ++k) // wall times apart
+        EXPECT_EQ(a["passes"][k]["steps"], b["passes"][k]["steps"]);
+}
+
+TEST(CalenderEndToEnd, ResumeRefusesAFolderWithoutACalenderingCheckpoint) {
+    const Config c = small_film({});
+    const auto [run, out] = folders_for(c);
+    CalenderOptions o{run, out, true, false, std::nullopt};
+    o.resume = true;
+    EXPECT_THROW((void)read_calender_resume(out), InputError);
+    EXPECT_THROW((void)run_calendering(c, o), InputError);
+    EXPECT_TRUE(fs::exists(run / "final.csv")) << "the dried run stays untouched";
 }
 
 TEST(CalenderEndToEnd, RefusesAMinimalPorosityAboveTheDriedOneOrBelowTheBinders) {

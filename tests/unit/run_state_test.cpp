@@ -103,3 +103,43 @@ TEST(RunState, OneNameSavedTwiceIsAProgrammingError) {
     f("a", x);
     EXPECT_THROW(f("a", x), std::logic_error);
 }
+
+TEST(RunState, VectorsAndTextsRoundTripWithTheirLength) {
+    std::vector<double> curve{0.5, 0.25 + 1e-17, -3.0};
+    std::vector<std::int64_t> none;
+    std::string run = "runs/L20.1 \"quoted\"";
+    const auto bytes = saved([&](StateFields& f) {
+        f("a.curve", curve);
+        f("a.none", none);
+        f("a.run", run);
+    });
+    std::vector<double> c2{9.0};
+    std::vector<std::int64_t> n2{1, 2};
+    std::string r2 = "old";
+    EXPECT_EQ(load_error(bytes,
+                         [&](StateFields& f) {
+                             EXPECT_TRUE(f.has("a.curve"));
+                             EXPECT_FALSE(f.has("a.other"));
+                             f("a.curve", c2);
+                             f("a.none", n2);
+                             f("a.run", r2);
+                         }),
+              "");
+    EXPECT_EQ(c2, curve);
+    EXPECT_TRUE(n2.empty());
+    EXPECT_EQ(r2, run);
+}
+
+TEST(RunState, AVectorOfAnotherElementSizeIsRefused) {
+    const auto bytes = saved([](StateFields& f) {
+        std::vector<char> three{1, 2, 3};
+        f("a.values", three);
+    });
+    const std::string e = load_error(bytes, [](StateFields& f) {
+        std::vector<double> values;
+        f("a.values", values);
+    });
+    EXPECT_NE(e.find("'a.values' has 3 bytes, this build expects a multiple of 8"),
+              std::string::npos)
+        << e;
+}

@@ -69,6 +69,7 @@ int run_coupled(const Config& c, const RunOptions& o);
 /// `drydem calender RUN_DIR`: the calendering of a finished drying run (docs/calendering.md).
 struct CalenderCommand {
     std::filesystem::path run_dir, output_dir; ///< output_dir empty: RUN_DIR-calendered
+    std::filesystem::path resume_dir;          ///< --resume: a stopped calendering's folder
     std::vector<std::string> sets;             ///< --set over the run's config.toml
     int threads = 0;                           ///< 0: run.threads of the config
     bool overwrite = false, quiet = false, plots = true;

@@ -162,7 +162,11 @@ void declare_calender(CommandLine& a) {
         "calender", "press the dried film of a finished run with a rigid plate, unload it, and "
                     "analyse the calendered film (docs/calendering.md)");
     a.calender->add_option("run_dir", o.run_dir, "the drying run's folder (its final.csv)")
-        ->required()
+        ->check(CLI::ExistingDirectory);
+    a.calender
+        ->add_option("--resume", o.resume_dir,
+                     "continue the stopped calendering in DIR from its checkpoint, with its "
+                     "config (only --threads, --quiet, --no-plots, --stop-after-steps besides)")
         ->check(CLI::ExistingDirectory);
     a.calender->add_option("-o,--output", o.output_dir,
                            "output folder (default: RUN_DIR-calendered beside the run)");

@@ -18,6 +18,9 @@
 //      In unloaded_porosity mode steps 3-6 repeat as passes, each pressed deeper (passes.hpp),
 //      until the relaxed film has the target porosity.
 //   7. end: final.csv, summary.json with the fitted compaction curve, the structure analysis.
+// checkpoint/state.bin every output.checkpoint_every of wall time and when stopped: the engine's
+// state, the bonds, and the run's own progress (fields()), so that `drydem calender --resume`
+// continues bit for bit.
 // From the load on, every kCompactionEvery steps the CB agglomerates compact under their mean
 // stress (calendering.cb_compaction_pressure, model.md M-2.11), and those that dense partners
 // pressed past their densest state flow out of the gap (calendering.cb_extrusion, M-2.13).
@@ -31,9 +34,12 @@
 #include "drydem/core/error.hpp"
 #include "drydem/core/stop_request.hpp"
 #include "drydem/drying/analysis_inputs.hpp"
+#include "drydem/drying/derived_checks.hpp"
 #include "drydem/drying/film_measures.hpp"
 #include "drydem/drying/film_setup.hpp"
+#include "drydem/drying/drying_run.hpp"
 #include "drydem/drying/law_parameters.hpp"
+#include "drydem/drying/run_checkpoint.hpp"
 #include "drydem/drying/run_observer.hpp"
 #include "drydem/drying/run_summary.hpp"
 #include "drydem/drying/stability_guard.hpp"
@@ -90,6 +96,19 @@ public:
 
 private:
     [[nodiscard]] ParticleStore dried_film();
+    [[nodiscard]] EngineSettings engine_settings() const;
+    /// The engine as the checkpoint left it (its bonds, plate and guard vectors: fields()).
+    [[nodiscard]] std::unique_ptr<Simulation> resumed_simulation();
+    /// compaction.csv: a new one, or a resumed run's cut back to the checkpoint.
+    [[nodiscard]] CsvSeriesWriter compaction_csv();
+    void start();
+    void resume();
+    /// Everything the run keeps beside the engine's state, saved or loaded (run_state.hpp).
+    void fields(StateFields& f);
+    void write_checkpoint();
+    [[nodiscard]] double wall_time() const {
+        return wall_before_ + std::chrono::duration<double>(Clock::now() - start_).count();
+    }
     void refuse_unreachable_target() const;
     [[nodiscard]] std::unique_ptr<Simulation> make_simulation(ParticleStore particles);
     void start_pressing();
@@ -192,7 +211,10 @@ private:
 
     const Config& c_;
     const CalenderOptions& o_;
+    std::optional<RunCheckpoint> checkpoint_; ///< resuming: what the run continues from
     const Clock::time_point start_ = Clock::now();
+    Clock::time_point last_checkpoint_ = start_;
+    double wall_before_ = 0.0;                   ///< wall seconds of the sessions before this one
     Clock::time_point pass_wall_start_ = start_; ///< the present pass's load began
     std::int64_t pass_first_step_ = 0;
     StatusLine status_;
@@ -224,6 +246,7 @@ private:
     double phase_start_ = 0.0, last_record_ = -INFINITY, pressure_ = 0.0;
     CsvSeriesWriter csv_;
     std::ofstream dump_;
+    std::uint64_t csv_bytes_ = 0, dump_bytes_ = 0; ///< at the checkpoint: the rest is replayed
     std::size_t rows_ = 0;
     std::vector<double> load_pressure_, load_porosity_, load_inertial_;
     CalenderResult r_;
@@ -239,34 +262,52 @@ private:
 };
 
 CalenderRun::CalenderRun(const Config& c, const CalenderOptions& o)
-    : c_(c), o_(o), status_(!o.quiet && isatty(STDERR_FILENO)),
-      log_(make_run_logger(o.output_dir, o.quiet, false, status_)), film_(describe_film(c)),
-      sim_(make_simulation(dried_film())),
+    : c_(c), o_(o),
+      checkpoint_(o.resume ? std::optional(read_run_checkpoint(o.output_dir)) : std::nullopt),
+      status_(!o.quiet && isatty(STDERR_FILENO)),
+      log_(make_run_logger(o.output_dir, o.quiet, o.resume, status_)), film_(describe_film(c)),
+      sim_(o.resume ? resumed_simulation() : make_simulation(dried_film())),
       guard_(GuardPolicy::adapt, {largest_calender_step(c), critical_fraction_for(c, "explicit")},
              *log_),
       fire_(1.8 * largest_calender_step(c)), relax_fire_(1.8 * largest_calender_step(c)),
       settle_force_(c.calender_settle_tolerance * film_.box.area() /
                     double(std::max<std::size_t>(sim_->particles().size(), 1))),
       speed_(c.calender_plate_speed), compaction_(agglomerate_compaction(c)),
-      extrusion_(agglomerate_extrusion(c)),
-      csv_(o.output_dir / "compaction.csv", {"time_s",           "phase",
-                                             "plate_height_um",  "pressure_MPa",
-                                             "porosity",         "film_top_um",
-                                             "contacts",         "max_overlap_rel",
-                                             "kinetic_energy_J", "dt_s",
-                                             "inertial_number",  "bonds_intact",
-                                             "bonds_broken",     "cb_inner_porosity",
-                                             "stress_xx_MPa",    "stress_yy_MPa",
-                                             "stress_zz_MPa",    "stress_xy_MPa",
-                                             "stress_xz_MPa",    "stress_yz_MPa",
-                                             "cb_extruded",      "pass"}) {
+      extrusion_(agglomerate_extrusion(c)), csv_(compaction_csv()) {
     for (const SizeClass& s : film_.recipe.species)
         inertia_scale_ =
             std::max(inertia_scale_, s.diameter * std::sqrt(s.density * mass_scaling(s)));
+    const fs::path dump = o.output_dir / "snapshots" / "dump.lammpstrj";
+    if (checkpoint_) {
+        checkpoint_->progress("calender.dump_bytes", dump_bytes_);
+        truncate_to_checkpoint(dump, dump_bytes_);
+        dump_.open(dump, std::ios::app);
+        return;
+    }
     refuse_unreachable_target();
     std::ofstream(o.output_dir / "config.toml") << to_toml(c);
     fs::create_directories(o.output_dir / "snapshots");
-    dump_.open(o.output_dir / "snapshots" / "dump.lammpstrj");
+    dump_.open(dump);
+}
+
+CsvSeriesWriter CalenderRun::compaction_csv() {
+    const fs::path file = o_.output_dir / "compaction.csv";
+    if (checkpoint_) {
+        checkpoint_->progress("calender.csv_bytes", csv_bytes_);
+        truncate_to_checkpoint(file, csv_bytes_);
+    }
+    return CsvSeriesWriter(file, {"time_s",           "phase",
+                                  "plate_height_um",  "pressure_MPa",
+                                  "porosity",         "film_top_um",
+                                  "contacts",         "max_overlap_rel",
+                                  "kinetic_energy_J", "dt_s",
+                                  "inertial_number",  "bonds_intact",
+                                  "bonds_broken",     "cb_inner_porosity",
+                                  "stress_xx_MPa",    "stress_yy_MPa",
+                                  "stress_zz_MPa",    "stress_xy_MPa",
+                                  "stress_xz_MPa",    "stress_yz_MPa",
+                                  "cb_extruded",      "pass"},
+                           checkpoint_.has_value());
 }
 
 /// The dried film: final.csv of the run, at rest.
@@ -347,6 +388,12 @@ std::unique_ptr<Simulation> CalenderRun::make_simulation(ParticleStore particles
         particles.velocity[i] = particles.omega[i] = Vec3{};
     for (std::size_t k = 0; k < film_.recipe.species.size(); ++k)
         particles.scale_inertia(std::uint8_t(k), mass_scaling(film_.recipe.species[k]));
+    return std::make_unique<Simulation>(std::move(particles), film_.box,
+                                        make_calendering_force_field(c_, film_.recipe),
+                                        engine_settings());
+}
+
+EngineSettings CalenderRun::engine_settings() const {
     EngineSettings es;
     es.integrator = Integrator::explicit_verlet;
     es.dt = largest_calender_step(c_);
@@ -354,9 +401,16 @@ std::unique_ptr<Simulation> CalenderRun::make_simulation(ParticleStore particles
     es.threads = c_.threads;
     es.sort_every = c_.sort_every;
     es.overlap_limit = c_.overlap_limit;
-    es.guard_warm_start = true; // a calendering run never resumes; its list is rebuilt often
-    return std::make_unique<Simulation>(std::move(particles), film_.box,
-                                        make_calendering_force_field(c_, film_.recipe), es);
+    es.guard_warm_start = true; // its list is rebuilt often; a checkpoint keeps the vectors
+    return es;
+}
+
+std::unique_ptr<Simulation> CalenderRun::resumed_simulation() {
+    // The checkpoint's particles carry the scaled inertia, compacted agglomerates and the
+    // extruded ones' absence already.
+    return std::make_unique<Simulation>(std::move(checkpoint_->engine), film_.box,
+                                        make_calendering_force_field(c_, film_.recipe),
+                                        engine_settings());
 }
 
 /// The settled film at rest, the guard's step again, the plate on the highest particle.
@@ -688,25 +742,144 @@ void CalenderRun::write_frame() {
                        std::isfinite(sim_->plate_height()) ? sim_->plate_height() : highest_top());
 }
 
-CalenderResult CalenderRun::calender() {
+/// A fresh run: the dried film measured, the guard's first estimate, the first row.
+void CalenderRun::start() {
     r_.dried_thickness = film_top();
     r_.dried_porosity = porosity_at(r_.dried_thickness);
     dried_overlap_ = sim_->stats().max_overlap_rel;
     const ParticleStore& p = sim_->particles();
     for (std::size_t i = 0; i < p.size(); ++i)
         if (is_cb(i)) cb_mass_ += p.density[i] * sphere_volume(p.radius[i]);
+    guard_.start(*sim_);
+    fire_ = FireRelaxation(1.8 * sim_->settings().dt); // within the guard's stable range
+    record();
+    if (c_.checkpoint_every > 0) write_checkpoint(); // a run killed early can still resume
+}
+
+/// A resumed run: everything as the checkpoint left it.
+void CalenderRun::resume() {
+    fields(checkpoint_->progress);
+    checkpoint_->progress.check_all_loaded();
+    checkpoint_.reset();
+    log_->info("DryDEM {} ({}) resuming the calendering of {} at step {} (t = {:.4g} us, {}), "
+               "{} threads",
+               DRYDEM_VERSION, DRYDEM_GIT_HASH, o_.run_dir.string(), steps(), now() * 1e6,
+               phase_name(phase_), sim_->threads());
+}
+
+void CalenderRun::write_checkpoint() {
+    dump_.flush();
+    csv_bytes_ = fs::file_size(o_.output_dir / "compaction.csv");
+    dump_bytes_ = fs::file_size(o_.output_dir / "snapshots" / "dump.lammpstrj");
+    write_run_checkpoint(
+        o_.output_dir, to_toml(c_), [this](StateFields& f) { fields(f); }, sim_->state());
+    last_checkpoint_ = Clock::now();
+    r_.resumable = true;
+}
+
+void CalenderRun::fields(StateFields& f) {
+    // What read_calender_resume needs before the run is made again.
+    std::string run_dir = fs::absolute(o_.run_dir).string();
+    f("calender.run_dir", run_dir);
+    std::int32_t threads = sim_->threads();
+    f("run.threads", threads);
+    // The phases' progress.
+    int phase = int(phase_);
+    f("calender.phase", phase);
+    phase_ = Phase(phase);
+    f("calender.phase_start", phase_start_);
+    f("calender.last_record", last_record_);
+    f("calender.pressure", pressure_);
+    f("calender.rows", rows_);
+    f("calender.csv_bytes", csv_bytes_);
+    f("calender.dump_bytes", dump_bytes_);
+    f("calender.settle_fire", fire_);
+    f("calender.relax_fire", relax_fire_);
+    f("calender.relax_top", relax_top_);
+    f("calender.next_top_check", next_top_check_);
+    f("calender.top_static", top_static_);
+    f("calender.settled", settled_);
+    f("calender.settle_force", settle_force_); // per particle of the film as dried
+    // The film as dried and settled, the peak, the passes, the virgin loading curve.
+    f("calender.ncm", film_.n_ncm);
+    f("calender.cb", film_.n_cb);
+    f("calender.dried_thickness", r_.dried_thickness);
+    f("calender.dried_porosity", r_.dried_porosity);
+    f("calender.dried_overlap", dried_overlap_);
+    f("calender.settled_thickness", settled_thickness_);
+    f("calender.settled_overlap", settled_overlap_);
+    f("calender.peak_pressure", r_.peak_pressure);
+    f("calender.peak_thickness", r_.peak_thickness);
+    f("calender.peak_porosity", r_.peak_porosity);
+    f("calender.peak_plate", peak_plate_);
+    f("calender.peak_sphere_fraction", peak_sphere_fraction_);
+    f("calender.peak_cb_porosity", peak_cb_porosity_);
+    f("calender.peak_target", peak_target_);
+    f("calender.pass_peak_pressure", pass_peak_pressure_);
+    f("calender.pass_first_step", pass_first_step_);
+    f("calender.passes", passes_);
+    f("calender.load_pressure", load_pressure_);
+    f("calender.load_porosity", load_porosity_);
+    f("calender.load_inertial", load_inertial_);
+    // The agglomerates and the bonds.
+    f("calender.cb_mass", cb_mass_);
+    f("calender.extruded", extruded_);
+    f("calender.extruded_bonds", extruded_bonds_);
+    f("calender.extruded_broken_bonds", extruded_broken_bonds_);
+    f("calender.extruded_mass", extruded_mass_);
+    f("calender.bonding", bonding_);
+    f("calender.binder_source", binder_.source);
+    f("calender.broken_at_peak", broken_at_peak_);
+    // Wall time: the sessions so far, and the present pass's share of them.
+    double wall = wall_time(),
+           pass_wall = std::chrono::duration<double>(Clock::now() - pass_wall_start_).count();
+    f("calender.wall_time", wall);
+    f("calender.pass_wall_time", pass_wall);
+    guard_.fields(f);
+    // The engine's parts that its state does not hold.
+    double plate = sim_->plate_height();
+    f("calender.plate_height", plate);
+    std::vector<Bond> bonds = sim_->bonds().bonds;
+    f("calender.bonds", bonds);
+    std::array<std::vector<double>, 2> warm = sim_->guard_warm_start();
+    f("calender.guard_warm_start_0", warm[0]);
+    f("calender.guard_warm_start_1", warm[1]);
+    if (!f.loading()) return;
+    wall_before_ = wall;
+    pass_wall_start_ = Clock::now() - std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double>(pass_wall));
+    sim_->set_plate_height(plate);
+    if (!bonds.empty()) {
+        BondNetwork network = calendering_bond_parameters(c_, film_.recipe);
+        network.bonds = std::move(bonds);
+        sim_->set_bonds(std::move(network), /*from_checkpoint=*/true);
+    }
+    sim_->set_guard_warm_start(std::move(warm));
+}
+
+CalenderResult CalenderRun::calender() {
     try {
-        guard_.start(*sim_);
-        fire_ = FireRelaxation(1.8 * sim_->settings().dt); // within the guard's stable range
-        record();
+        if (checkpoint_)
+            resume();
+        else
+            start();
         while (phase_ != Phase::done) {
-            if (const int sig = stop_requested())
+            if (const int sig = stop_requested()) {
+                write_checkpoint();
                 throw RunError(fmt::format("stopped by signal {} before the end", sig));
-            if (o_.stop_after_steps && steps() >= *o_.stop_after_steps)
+            }
+            if (o_.stop_after_steps && steps() >= *o_.stop_after_steps) {
+                write_checkpoint();
                 throw RunError(fmt::format("stopped after step {} (--stop-after-steps)", steps()));
+            }
             step();
+            if (c_.checkpoint_every > 0 &&
+                std::chrono::duration<double>(Clock::now() - last_checkpoint_).count() >=
+                    c_.checkpoint_every)
+                write_checkpoint();
         }
         r_.completed = true;
+        r_.resumable = false;
     } catch (const RunError& e) {
         r_.error = e.what();
         // The engine's diagnosis speaks of the drying's scaled forces; here the plate presses.
@@ -729,7 +902,7 @@ void CalenderRun::finish() {
     status_.clear();
     r_.steps = steps();
     r_.passes = int(passes_.size());
-    r_.wall_time = std::chrono::duration<double>(Clock::now() - start_).count();
+    r_.wall_time = wall_time();
     if (r_.completed) {
         r_.unloaded_thickness = film_top();
         r_.unloaded_porosity = porosity_at(r_.unloaded_thickness);
@@ -933,6 +1106,22 @@ void CalenderRun::analyse(json& s) const {
 }
 
 } // namespace
+
+CalenderResume read_calender_resume(const std::filesystem::path& output_dir) {
+    RunCheckpoint ck = read_run_checkpoint(output_dir);
+    if (!ck.progress.has("calender.run_dir"))
+        throw InputError(fmt::format("{}: holds a drying run's checkpoint, not a calendering's; "
+                                     "continue it with drydem run --resume {}",
+                                     output_dir.string(), output_dir.string()));
+    CalenderResume r{load_config(ck.config_toml, checkpoint_file(output_dir).string()), {}};
+    std::int32_t threads = 0;
+    ck.progress("run.threads", threads);
+    r.config.threads = threads;
+    std::string run_dir;
+    ck.progress("calender.run_dir", run_dir);
+    r.run_dir = run_dir;
+    return r;
+}
 
 CalenderResult run_calendering(const Config& c, const CalenderOptions& options) {
     CalenderRun run(c, options);

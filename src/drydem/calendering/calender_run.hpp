@@ -20,6 +20,10 @@ struct CalenderOptions {
     bool plots = true; ///< scripts/plot_calender.py with Debian's python3 at the end
     /// For testing: stop after this many steps as a stop request would (results so far).
     std::optional<std::int64_t> stop_after_steps;
+    /// Continue the calendering in output_dir from its checkpoint (checkpoint/state.bin, written
+    /// every output.checkpoint_every of wall time and when stopped); run_dir and the config are
+    /// the checkpoint's (read_calender_resume).
+    bool resume = false;
 };
 
 struct CalenderResult {
@@ -37,8 +41,18 @@ struct CalenderResult {
     double max_inertial_number = 0.0; ///< while loading above 1 % of the peak pressure
     int passes = 0; ///< press-unload-relax cycles (more than one in unloaded_porosity mode)
     std::int64_t steps = 0;
-    double wall_time = 0.0; ///< [s], the end-of-run analysis excluded
+    double wall_time = 0.0; ///< [s], the end-of-run analysis excluded (a resumed run: all sessions)
+    bool resumable = false; ///< stopped with a checkpoint of its state (`--resume` continues it)
 };
+
+/// What a stopped calendering run in output_dir continues with: the config it ran with (its
+/// thread count included, so that it continues bit for bit) and its drying run's folder.
+/// InputError where output_dir holds no calendering checkpoint.
+struct CalenderResume {
+    Config config;
+    std::filesystem::path run_dir;
+};
+[[nodiscard]] CalenderResume read_calender_resume(const std::filesystem::path& output_dir);
 
 /// Runs the calendering of the film in options.run_dir with the configuration c (the drying
 /// run's config.toml with the caller's overrides). InputError before the first step for bad

@@ -340,6 +340,10 @@ void check_rank_count(const Config& c, int ranks) {
 
 Config resume_config(const std::filesystem::path& output_dir) {
     RunCheckpoint ck = read_run_checkpoint(output_dir);
+    if (ck.progress.has("calender.run_dir"))
+        throw InputError(fmt::format("{}: holds a calendering run's checkpoint, not a drying "
+                                     "run's; continue it with drydem calender --resume {}",
+                                     output_dir.string(), output_dir.string()));
     Config c = load_config(ck.config_toml, checkpoint_file(output_dir).string());
     std::int32_t threads = 0;
     ck.progress("run.threads", threads);

@@ -32,7 +32,21 @@ void write_run_checkpoint(const std::filesystem::path& output_dir, const std::st
     w.str(config_toml);
     progress.write(w);
     write_engine_state(w, engine);
+    std::filesystem::create_directories(checkpoint_file(output_dir).parent_path());
     write_checkpoint_file(checkpoint_file(output_dir), w);
+}
+
+void truncate_to_checkpoint(const std::filesystem::path& file, std::uint64_t size) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) {
+        if (size == 0) return;
+        throw InputError(fmt::format("--resume: {} is missing", file.string()));
+    }
+    if (std::filesystem::file_size(file) < size)
+        throw InputError(
+            fmt::format("--resume: {} is shorter than at the checkpoint", file.string()));
+    std::filesystem::resize_file(file, size, ec);
+    if (ec) throw RunError(fmt::format("cannot truncate {}: {}", file.string(), ec.message()));
 }
 
 } // namespace drydem

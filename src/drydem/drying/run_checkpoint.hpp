@@ -5,6 +5,7 @@
 #pragma once
 #include "drydem/drying/run_state.hpp"
 #include "drydem/engine/simulation.hpp"
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -24,5 +25,9 @@ struct RunCheckpoint {
 void write_run_checkpoint(const std::filesystem::path& output_dir, const std::string& config_toml,
                           const std::function<void(StateFields&)>& visit_state,
                           const EngineState& engine);
+
+/// Cuts an output file back to its `size` at the checkpoint: what was written after it is
+/// written again by the resumed run. InputError where it is missing or shorter.
+void truncate_to_checkpoint(const std::filesystem::path& file, std::uint64_t size);
 
 } // namespace drydem

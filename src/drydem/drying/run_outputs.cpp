@@ -28,20 +28,6 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 /// Overlaps beyond this fraction of the smaller radius are warned about once (model.md C-9).
 constexpr double kOverlapWarning = 0.25;
 
-/// Cuts a file back to `size` bytes: output written after the checkpoint is replayed.
-void truncate_file(const fs::path& file, std::uint64_t size) {
-    std::error_code ec;
-    if (!fs::exists(file, ec)) {
-        if (size == 0) return;
-        throw InputError(fmt::format("--resume: {} is missing", file.string()));
-    }
-    if (fs::file_size(file) < size)
-        throw InputError(
-            fmt::format("--resume: {} is shorter than at the checkpoint", file.string()));
-    fs::resize_file(file, size, ec);
-    if (ec) throw RunError(fmt::format("cannot truncate {}: {}", file.string(), ec.message()));
-}
-
 /// A trigger every `every` seconds of simulated time; never where `every` is infinite.
 struct Every {
     double every;
@@ -93,7 +79,7 @@ public:
                                                                 ctx.config.timeseries_every)} {}
     const char* name() const override { return "time series"; }
     void open(const StepView& s, bool resumed) override {
-        if (resumed) truncate_file(file_, bytes_);
+        if (resumed) truncate_to_checkpoint(file_, bytes_);
         writer_.emplace(file_,
                         std::vector<std::string>{
                             "process_time_s", "sim_time_s", "step", "liquid_level_um",
@@ -260,7 +246,7 @@ public:
           file_(ctx.options.output_dir / "snapshots" / "dump.lammpstrj") {}
     const char* name() const override { return "dump"; }
     void open(const StepView& s, bool resumed) override {
-        if (resumed) truncate_file(file_, bytes_);
+        if (resumed) truncate_to_checkpoint(file_, bytes_);
         os_.open(file_, resumed ? std::ios::app : std::ios::trunc);
         if (resumed) return;
         first_frame(s);

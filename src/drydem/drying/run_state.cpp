@@ -50,6 +50,24 @@ const std::vector<unsigned char>& StateFields::find(std::string_view name, std::
     return it->second;
 }
 
+const std::vector<unsigned char>& StateFields::find_multiple(std::string_view name,
+                                                             std::size_t element) {
+    const auto it = fields_.find(name);
+    if (it == fields_.end()) mismatch(fmt::format("it has no run progress field '{}'", name));
+    if (it->second.size() % element != 0)
+        mismatch(fmt::format("its run progress field '{}' has {} bytes, this build expects a "
+                             "multiple of {}",
+                             name, it->second.size(), element));
+    loaded_.emplace(name);
+    return it->second;
+}
+
+void StateFields::operator()(std::string_view name, std::string& text) {
+    std::vector<char> chars(text.begin(), text.end());
+    (*this)(name, chars);
+    if (loading_) text.assign(chars.begin(), chars.end());
+}
+
 void StateFields::check_all_loaded() const {
     for (const auto& [name, bytes] : fields_)
         if (!loaded_.contains(name))

@@ -47,7 +47,26 @@ public:
         }
     }
 
+    /// The same for a vector of plain values (its length stored with it).
+    template <class T>
+    void operator()(std::string_view name, std::vector<T>& values) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        if (!loading_) {
+            std::vector<unsigned char> bytes(values.size() * sizeof(T));
+            if (!values.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+            store(name, std::move(bytes));
+        } else {
+            const std::vector<unsigned char>& bytes = find_multiple(name, sizeof(T));
+            values.resize(bytes.size() / sizeof(T));
+            if (!values.empty()) std::memcpy(values.data(), bytes.data(), bytes.size());
+        }
+    }
+    /// The same for a text.
+    void operator()(std::string_view name, std::string& text);
+
     [[nodiscard]] bool loading() const { return loading_; }
+    /// Whether the stored list has a field `name` (loading): which kind of run wrote it.
+    [[nodiscard]] bool has(std::string_view name) const { return fields_.contains(name); }
     /// Writes the list (saving).
     void write(BinaryWriter& w) const;
     /// After loading: InputError if a stored field was not claimed by any part of this build.
@@ -56,6 +75,8 @@ public:
 private:
     void store(std::string_view name, std::vector<unsigned char> bytes);
     const std::vector<unsigned char>& find(std::string_view name, std::size_t size);
+    /// A field whose size is a multiple of `element` bytes.
+    const std::vector<unsigned char>& find_multiple(std::string_view name, std::size_t element);
     [[noreturn]] void mismatch(const std::string& what) const;
 
     bool loading_ = false;

@@ -575,7 +575,7 @@ void Simulation::compute_forces() {
     }
 }
 
-void Simulation::set_bonds(BondNetwork bonds) {
+void Simulation::set_bonds(BondNetwork bonds, bool from_checkpoint) {
     if (halo_ && !bonds.bonds.empty())
         throw InputError("solid bonds do not run on several MPI ranks yet (docs/parallel.md)");
     if (!bonds.bonds.empty() && settings_.integrator != Integrator::explicit_verlet)
@@ -592,7 +592,7 @@ void Simulation::set_bonds(BondNetwork bonds) {
                 fmt::format("bond between particles {} and {} of {}", b.i, b.j, p_.size()));
     bonds_ = std::move(bonds);
     bond_force_.assign(bonds_.bonds.size(), {});
-    force_rebuild_ = true;
+    if (!from_checkpoint) force_rebuild_ = true;
 }
 
 PairForce Simulation::bond_force(const Bond& b) const {

@@ -164,9 +164,20 @@ public:
     /// The solid bonds (bond_network.hpp), acting from the next force evaluation on: their
     /// indices refer to the present storage order. Explicit integrator only (their damping is not
     /// in the semi-implicit self-blocks nor in the quasi-static system); InputError otherwise,
-    /// or for a parameter outside the bond law's limits or an index out of range.
-    void set_bonds(BondNetwork bonds);
+    /// or for a parameter outside the bond law's limits or an index out of range. The neighbour
+    /// list is rebuilt to hold them, except `from_checkpoint`: a state whose list was built with
+    /// them continues as it was (bit for bit).
+    void set_bonds(BondNetwork bonds, bool from_checkpoint = false);
     [[nodiscard]] const BondNetwork& bonds() const { return bonds_; }
+    /// guard_warm_start: the last stability estimate's vectors by particle id, which the next
+    /// estimate starts from; a checkpoint keeps them so that the resumed guard sets the same step.
+    [[nodiscard]] std::array<std::vector<double>, 2> guard_warm_start() const {
+        return {guard_by_id_[0], guard_by_id_[1]};
+    }
+    void set_guard_warm_start(std::array<std::vector<double>, 2> v) {
+        guard_by_id_[0] = std::move(v[0]);
+        guard_by_id_[1] = std::move(v[1]);
+    }
     /// The force on i and the torques of bond b at the present state (its history not advanced).
     [[nodiscard]] PairForce bond_force(const Bond& b) const;
 

@@ -96,7 +96,8 @@ const OutputKind& analysis_output() {
 const OutputKind& calender_output() {
     static const OutputKind k{"calendering run",
                               {"config.toml", "log.txt", "summary.json", "compaction.csv",
-                               "final.csv", "snapshots", "analysis", "plots"},
+                               "final.csv", "particle_bonds.csv", "snapshots", "analysis", "plots",
+                               "checkpoint"},
                               false,
                               [](const fs::path& d) { return present(d / "compaction.csv"); },
                               ""};
