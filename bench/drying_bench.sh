@@ -39,14 +39,15 @@ for case in $cases; do
       --set numerics.integrator="$integ" --set analysis.at_end=false -o "$dir" >&2 || true
   done
 done
-/usr/bin/python3 - "$out" $cases <<'PY'
+INTEGRATORS="$integrators" /usr/bin/python3 - "$out" $cases <<'PY'
 import json, sys, os
 out, cases = sys.argv[1], sys.argv[2:]
+integrators = os.environ["INTEGRATORS"].split()
 print(f"{'case':<9} {'integrator':<14} {'wall s':>8} {'proc s/wall s':>13} {'p-steps/s':>10} "
       f"{'mean dt s':>10} {'steps':>9} {'thickness um':>12}  status")
 for case in cases:
     walls = {}
-    for integ in ("explicit", "semi_implicit"):
+    for integ in integrators:
         f = os.path.join(out, f"{case}_{integ}", "summary.json")
         if not os.path.exists(f):
             continue
@@ -56,6 +57,7 @@ for case in cases:
         print(f"{case:<9} {integ:<14} {wall:8.1f} {s['process_time_end_s'] / wall:13.4f} "
               f"{s['particle_steps_per_s']:10.3g} {s.get('time_step_mean_s', 0):10.3g} {s['steps']:9d} "
               f"{(thick if thick is not None else float('nan')):12.3f}  {s['status']}")
-    if len(walls) == 2:
-        print(f"{case:<9} ratio explicit/semi_implicit wall time: {walls['explicit'] / walls['semi_implicit']:.2f}")
+    for integ, wall in walls.items():
+        if integ != "explicit" and "explicit" in walls:
+            print(f"{case:<9} ratio explicit/{integ} wall time: {walls['explicit'] / wall:.2f}")
 PY
