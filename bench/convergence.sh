@@ -25,6 +25,10 @@
 #               matched their neighbours alone; the series below are taken against it
 #   q_e7.5_s4_b33
 #               Stokes knob at the candidate: k = 3e5, b = 33.3 (k b = 1e7 against 9e7)
+#   q_e7.5_s4_b10
+#               the Stokes knob a decade lower still: k = 9.487e4, b = 10.54 (k b = 1e6, f = 9e3;
+#               the largest NCM's Stokes number 0.004), whether the film reaches a plateau below
+#               b33 (~8e6 steps, ~3.5 h on one core; checkpointed, resumed by rerunning)
 #   q_e7.5_s4_x the candidate with the explicit reference integrator (velocity Verlet), its step
 #               cap lifted to the semi-implicit one's (1e-10 s) so that the guard sets both: the
 #               check of the integration against the reference at the same physical setting
@@ -106,6 +110,8 @@ for step in "$@"; do
     q_e7.5_s4) study q_e7.5_s4 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 ;;
     q_e7.5_s4_b33) study q_e7.5_s4_b33 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
+    q_e7.5_s4_b10) study q_e7.5_s4_b10 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set scaling.time_factor=9.487e4 --set scaling.viscosity_reduction=10.541 ;;
     q_e7.5_s4_x) study q_e7.5_s4_x $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
     q_e7.5_s4_f025) study q_e7.5_s4_f025 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
