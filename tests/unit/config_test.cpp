@@ -338,6 +338,22 @@ TEST(Config, CriticalStepFractionAboveHalfOnlySemiImplicit) {
               std::string::npos);
 }
 
+// numerics.implicit_stiffness (docs/model.md M-9.1) joins the semi-implicit kick only.
+TEST(Config, ImplicitStiffnessOnlyWithTheSemiImplicitKick) {
+    EXPECT_FALSE(load_config("", "t", {}).implicit_stiffness);
+    EXPECT_TRUE(load_config("", "t", {"numerics.implicit_stiffness=true"}).implicit_stiffness);
+    for (const char* integrator : {"explicit", "quasi_static"}) {
+        const std::string m = input_error(
+            "", {std::string("numerics.integrator=\"") + integrator + "\"",
+                 "numerics.implicit_stiffness=true"});
+        EXPECT_NE(m.find("numerics.implicit_stiffness = true with numerics.integrator"),
+                  std::string::npos)
+            << m;
+    }
+    EXPECT_NE(input_error("", {"numerics.implicit_stiffness=1.5"}).find("implicit_stiffness"),
+              std::string::npos);
+}
+
 // 0 (the default) is the integrator's own step: the guard alone (cap 1e-9 s, fraction 0.65) for
 // the semi-implicit kick in the paper's scheme, where it was measured not to move the film;
 // 1e-10 s and 0.5 in the force-ratio scheme, whose film moved at 0.65; 1e-11 s and 0.5 explicit.

@@ -306,6 +306,11 @@ void print_check(const Config& c) {
         "  integrator                {} (numerics.integrator), largest step {:.3g} s (scaled)\n",
         c.integrator, cap);
     if (c.integrator == "quasi_static") print_quasi_static_step(c, s);
+    if (c.implicit_stiffness)
+        fmt::print("  implicit self-stiffness   on (numerics.implicit_stiffness): each particle's "
+                   "contact and body stiffness is in its kick, so no stiffness bounds the step; "
+                   "the step is run.time_step, an accuracy choice to check by halving it "
+                   "(docs/model.md M-9.1)\n");
     fmt::print("  Rayleigh time             {:.3g} s (0.2 T_R = {:.3g} s)\n", ts.rayleigh,
                0.2 * ts.rayleigh);
     fmt::print("  Hertz contact time        {:.3g} s at 1 m/s, {:.3g} s at the level speed\n",

@@ -232,6 +232,13 @@ void check_critical_step_fraction(const Config& c, const std::vector<std::string
                            "max_displacement sets it); leave the key at 0",
                            f),
                {"numerics.critical_step_fraction", "numerics.integrator"}, bare);
+    if (c.implicit_stiffness && c.integrator != "semi_implicit")
+        refuse(c,
+               fmt::format("numerics.implicit_stiffness = true with numerics.integrator = "
+                           "\"{}\": the self-stiffness joins the semi-implicit kick only "
+                           "(docs/model.md M-9.1)",
+                           c.integrator),
+               {"numerics.implicit_stiffness", "numerics.integrator"}, bare);
 }
 
 /// The end-of-run voxel image (docs/analysis.md): a finite size that fits in this machine's memory

@@ -695,6 +695,22 @@ template <bool SelfBlocks, class List>
     }
 }
 
+// Implicit self-stiffness (model.md M-9.1): Δt K of a pair or a body law joins the resistance
+// that the semi-implicit kick's self-blocks are made of, so its inertia is M + Δt D + Δt² K_ii.
+void add_self_stiffness(PairResistance& r, const PairResistance& k, double dt) {
+    r.normal += dt * k.normal;
+    r.sliding += dt * k.sliding;
+    r.rolling += dt * k.rolling;
+    r.twisting += dt * k.twisting;
+}
+void add_self_stiffness(BodyResistance& r, const BodyResistance& k, double dt) {
+    r.normal += dt * k.normal;
+    r.tangential += dt * k.tangential;
+    r.coupling += dt * k.coupling;
+    r.rotation_t += dt * k.rotation_t;
+    r.rotation_n += dt * k.rotation_n;
+}
+
 // The slot of the neighbour list that entry k of the walked list names.
 std::uint32_t slot_of(const NearList& l, std::uint32_t k) { return l.slot(k); }
 std::uint32_t slot_of(const NeighborList&, std::uint32_t k) { return k; }
@@ -812,6 +828,8 @@ void Simulation::pair_loop(const List& list, std::size_t& contacts_out, double& 
                 if constexpr (SelfBlocks) {
                     PairResistance r;
                     f = pair_interaction(g, row[p.species[j]], state, dt, &r);
+                    if (settings_.implicit_stiffness)
+                        add_self_stiffness(r, PairLaws::tangent(g, row[p.species[j]], state), dt);
                     if (r.normal > 0.0 || r.sliding > 0.0 || r.rolling > 0.0) {
                         add_self_block(di, r, g.n, r.lever_i, 1.0);
                         add_self_block(local ? block[j] : own.block[j], r, g.n, r.lever_j, -1.0);
@@ -851,6 +869,10 @@ void Simulation::body_forces(std::size_t i, std::size_t& wall_contacts, double& 
         BodyLaws::force(g, ff_.body_params(p.species[i]), body_state_[i], settings_.dt, resistance);
     p.force[i] = b.force;
     p.torque[i] = b.torque;
+    if (resistance && settings_.implicit_stiffness)
+        add_self_stiffness(*resistance,
+                           BodyLaws::tangent(g, ff_.body_params(p.species[i]), body_state_[i]),
+                           settings_.dt);
     if (substrate_on_ && p.position[i].z < p.radius[i]) {
         ++wall_contacts;
         wall_overlap = std::max(wall_overlap, 1.0 - p.position[i].z / p.radius[i]);

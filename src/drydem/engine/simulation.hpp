@@ -44,8 +44,14 @@ struct EngineSettings {
     /// The stability estimate's power iteration starts from the last estimate's vector (carried
     /// by particle id, with a random part) instead of a fresh random one: far fewer iterations
     /// where it runs every few dozen steps (calendering, whose extrusion rebuilds the list). The
-    /// vector is not in the checkpoint, so a run that resumes must leave it off.
+    /// vector is not in the engine state: a run that resumes bit for bit keeps it itself
+    /// (guard_warm_start(), as the calendering checkpoint does).
     bool guard_warm_start = false;
+    /// Semi-implicit only: each particle's own stiffness blocks (contacts, body laws; the laws'
+    /// `tangent`) join the kick's, v += Δt (M + Δt D + Δt² K_ii)⁻¹ F (model.md M-9.1), so that
+    /// the stiffness no longer bounds the step: the stability estimate leaves it out and the
+    /// step is settings.dt.
+    bool implicit_stiffness = false;
     /// The pair loop walks a near list where that pays (near_list.hpp); false: always the whole
     /// neighbour list (the same forces to the bit; tests and A/B timings).
     bool near_list = true;

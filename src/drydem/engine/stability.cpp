@@ -281,6 +281,9 @@ Simulation::StabilityEstimate Simulation::stability_estimate() const {
     if (nl_.owners() != p_.size()) return out;
     if (halo_ ? halo_->all_sum(std::uint64_t(p_.size())) == 0 : p_.size() == 0) return out;
     const bool semi = semi_implicit();
+    // The stiffness is in the kick's inertia (M-9.1) and damping never bounds the semi-implicit
+    // kick: nothing left to estimate.
+    if (semi && settings_.implicit_stiffness) return out;
     const GuardInputs in{p_,
                          nl_,
                          box_,
