@@ -36,6 +36,10 @@
 #               step knob at the candidate: numerics.critical_step_fraction 0.25 (half the guarded
 #               step, which the guard keeps following the packing) and 0.65 (1.3x, the largest the
 #               semi-implicit kick allows; docs/model.md "Stability guard")
+#   q_e7.5_s4_is8 q_e7.5_s4_is16
+#               the candidate with the implicit self-stiffness (numerics.implicit_stiffness,
+#               docs/model.md M-9.1) at a fixed step of 8e-11 s and 1.6e-10 s (the guarded kick
+#               takes ~4.2e-11 s): whether the step beyond the contact bound moves the film
 #   r20_e7.5_s4 the paper's 20.1 mg/cm2 recipe (examples/paper_20.1.toml, paper values) at the
 #               candidate setting (force ratio, f = 9e3, k = 9e5, e = 7.5, S = 4) in a 40 um box:
 #               the film whose push number the paper's scheme distorts (~2e6 steps, 13,382
@@ -112,6 +116,10 @@ for step in "$@"; do
       --set scaling.time_factor=3e5 --set scaling.viscosity_reduction=33.333333 ;;
     q_e7.5_s4_b10) study q_e7.5_s4_b10 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set scaling.time_factor=9.487e4 --set scaling.viscosity_reduction=10.541 ;;
+    q_e7.5_s4_is8) study q_e7.5_s4_is8 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set numerics.implicit_stiffness=true --set run.time_step=8e-11 ;;
+    q_e7.5_s4_is16) study q_e7.5_s4_is16 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set numerics.implicit_stiffness=true --set run.time_step=1.6e-10 ;;
     q_e7.5_s4_x) study q_e7.5_s4_x $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
     q_e7.5_s4_f025) study q_e7.5_s4_f025 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \

@@ -54,6 +54,8 @@ SERIES = {
     "Stokes knob k b, at e = 7.5 and S = 4": ("q_e7.5_s4", [("q_e7.5_s4_b33", 1e7), ("q_e7.5_s4", 9e7)]),
     "integrator at e = 7.5 and S = 4: semi-implicit 1, explicit reference 2": (
         "q_e7.5_s4", [("q_e7.5_s4", 1), ("q_e7.5_s4_x", 2)]),
+    "implicit self-stiffness at e = 7.5 and S = 4: step (s), the guarded kick's mean 4.2e-11 s": (
+        "q_e7.5_s4", [("q_e7.5_s4", 4.2e-11), ("q_e7.5_s4_is8", 8e-11), ("q_e7.5_s4_is16", 1.6e-10)]),
     "critical-step fraction f at e = 7.5 and S = 4 (numerics.critical_step_fraction)": (
         "q_e7.5_s4", [("q_e7.5_s4_f025", 0.25), ("q_e7.5_s4", 0.5), ("q_e7.5_s4_f065", 0.65)]),
     # The quasi-static step (issue 30) at the process's own settings (k = b = e = 1): against the
@@ -65,7 +67,7 @@ SERIES = {
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
 STEPS = ["q_paper", "q_paper_cap9", "q_paper_f065", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s16",
-         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_x", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "p20", "p20_f065", "p20_sk02", "q_paper_new", "q_paper_x", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
+         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_b10", "q_e7.5_s4_x", "q_e7.5_s4_is8", "q_e7.5_s4_is16", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "p20", "p20_f065", "p20_sk02", "q_paper_new", "q_paper_x", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
 def leaves_level(run_dir: Path, after_s: float):
