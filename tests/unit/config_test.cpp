@@ -343,9 +343,9 @@ TEST(Config, ImplicitStiffnessOnlyWithTheSemiImplicitKick) {
     EXPECT_FALSE(load_config("", "t", {}).implicit_stiffness);
     EXPECT_TRUE(load_config("", "t", {"numerics.implicit_stiffness=true"}).implicit_stiffness);
     for (const char* integrator : {"explicit", "quasi_static"}) {
-        const std::string m = input_error(
-            "", {std::string("numerics.integrator=\"") + integrator + "\"",
-                 "numerics.implicit_stiffness=true"});
+        const std::string m =
+            input_error("", {std::string("numerics.integrator=\"") + integrator + "\"",
+                             "numerics.implicit_stiffness=true"});
         EXPECT_NE(m.find("numerics.implicit_stiffness = true with numerics.integrator"),
                   std::string::npos)
             << m;
