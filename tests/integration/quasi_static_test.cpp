@@ -7,25 +7,16 @@
 // an incline rolls without slipping below the angle where the friction it needs reaches μN, and
 // rolls and slides above it: both steady motions are known exactly.
 #include "drydem/engine/simulation.hpp"
+#include "settling_column.hpp"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <numbers>
 
 namespace {
 using namespace drydem;
+using namespace drydem::testing_support;
 
-constexpr double kR = 5e-6, kRho = 4740.0, kG = 1e7;
-
-ForceField field() {
-    ForceField ff = uniform_contact_force_field(1, 1e10, 0.3, 0.5, 0.5);
-    ff.set_body_law<StokesDragLaw>({0.18, true});
-    ff.set_body_law<GravityBuoyancyLaw>({kG, 0.0});
-    return ff;
-}
-
-double hertz_overlap_of(double force, double r_eff, double e_star) {
-    return std::pow(3.0 * force / (4.0 * e_star * std::sqrt(r_eff)), 2.0 / 3.0);
-}
+ForceField field() { return settling_field(); }
 
 EngineSettings settings() {
     EngineSettings s;
