@@ -61,6 +61,11 @@
 #               (cap 1e-9 s, f = 0.65, skin 0.2 um; pinned) and with the explicit reference
 #               integrator at its own defaults (cap 1e-11 s, skin 0.1 um): the default step
 #               checked against the reference on one build
+#   q_paper_is5 q_paper_is10 p20_is10
+#               the paper's scheme at its default step settings with the implicit self-stiffness
+#               (numerics.implicit_stiffness, docs/model.md M-9.1) at a fixed step of 5e-10 s and
+#               1e-9 s (the cap; the guarded kick takes ~2.2e-10 s on the quick case), on the
+#               quick case and on the 20.1 recipe in a 40 um box: whether the main job may take it
 #   archive:STEP
 #               the runs STEP has finished so far into the archive
 #
@@ -143,6 +148,11 @@ for step in "$@"; do
       --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 --set numerics.skin=0.2um ;;
     q_paper_new) study q_paper_new quick.toml "${new_paper_step[@]}" ;;
     q_paper_x) study q_paper_x quick.toml --set numerics.integrator=explicit ;;
+    q_paper_is5) study q_paper_is5 quick.toml "${new_paper_step[@]}" --set numerics.implicit_stiffness=true \
+      --set run.time_step=5e-10 ;;
+    q_paper_is10) study q_paper_is10 quick.toml "${new_paper_step[@]}" --set numerics.implicit_stiffness=true ;;
+    p20_is10) study p20_is10 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um \
+      "${new_paper_step[@]}" --set numerics.implicit_stiffness=true ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac
