@@ -66,6 +66,10 @@
 #               (numerics.implicit_stiffness, docs/model.md M-9.1) at a fixed step of 5e-10 s and
 #               1e-9 s (the cap; the guarded kick takes ~2.2e-10 s on the quick case), on the
 #               quick case and on the 20.1 recipe in a 40 um box: whether the main job may take it
+#   m75 m75_is10
+#               the README main job's recipe (examples/paper_20.1.toml, 75 um box) at the default of
+#               2026-12-07 (the guarded kick) and with the implicit self-stiffness at the 1e-9 s cap:
+#               whether the main job may take it (THREADS=2: ~15 and ~6 min a seed)
 #   archive:STEP
 #               the runs STEP has finished so far into the archive
 #
@@ -153,6 +157,8 @@ for step in "$@"; do
     q_paper_is10) study q_paper_is10 quick.toml "${new_paper_step[@]}" --set numerics.implicit_stiffness=true ;;
     p20_is10) study p20_is10 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um \
       "${new_paper_step[@]}" --set numerics.implicit_stiffness=true ;;
+    m75) study m75 paper_20.1.toml "${new_paper_step[@]}" --set numerics.implicit_stiffness=false ;;
+    m75_is10) study m75_is10 paper_20.1.toml "${new_paper_step[@]}" --set numerics.implicit_stiffness=true ;;
     archive:*) keep_small_files "$out/convergence_${step#archive:}" "$archive/${step#archive:}" ;;
     *) echo "unknown step $step (see the header of $0)" >&2; exit 2 ;;
   esac

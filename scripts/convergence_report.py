@@ -49,6 +49,8 @@ SERIES = {
         "q_paper_new", [("q_paper_new", 2.2e-10), ("q_paper_is5", 5e-10), ("q_paper_is10", 1e-9)]),
     "paper's scheme, 20.1 recipe in a 40 µm box: 1 guarded kick (default), 2 implicit self-stiffness at 1e-9 s": (
         "p20_sk02", [("p20_sk02", 1), ("p20_is10", 2)]),
+    "paper's scheme, the main job's recipe in its 75 µm box: 1 guarded kick, 2 implicit self-stiffness at 1e-9 s": (
+        "m75", [("m75", 1), ("m75_is10", 2)]),
     "paper's scheme, quick case: 1 explicit reference, 2 semi-implicit default since 2026-12-07": (
         "q_paper_x", [("q_paper_x", 1), ("q_paper_new", 2)]),
     # The candidate for the converged setting, e = 7.5 and S = 4 (bench/convergence.sh), against
@@ -71,7 +73,7 @@ SERIES = {
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
 STEPS = ["q_paper", "q_paper_cap9", "q_paper_f065", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s16",
-         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_b10", "q_e7.5_s4_x", "q_e7.5_s4_is8", "q_e7.5_s4_is16", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "p20", "p20_f065", "p20_sk02", "q_paper_new", "q_paper_x", "q_paper_is5", "q_paper_is10", "p20_is10", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
+         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_b10", "q_e7.5_s4_x", "q_e7.5_s4_is8", "q_e7.5_s4_is16", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "p20", "p20_f065", "p20_sk02", "q_paper_new", "q_paper_x", "q_paper_is5", "q_paper_is10", "p20_is10", "m75", "m75_is10", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
 def leaves_level(run_dir: Path, after_s: float):

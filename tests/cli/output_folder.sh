@@ -89,10 +89,11 @@ expect 1 "" -- study -o "$study" --overwrite --loadings 0.05 --seeds 1 --threads
 [[ -e "$study/runs/L9.99_s1" ]] && fail "study --overwrite left the old study's run"
 expect 2 "holds no DryDEM study" -- study -o "$dry" --overwrite --loadings 0.05 --seeds 1 --no-plots --quiet
 
-# 6. numerics.stability_guard = "refuse" refusing at the start: summary.json says failed.
+# 6. numerics.stability_guard = "refuse" refusing at the start: summary.json says failed (the kick
+# without the implicit self-stiffness, whose contacts bound the step).
 refused="$work/refused"
 expect 1 "stability bound" -- run -o "$refused" --set 'numerics.stability_guard="refuse"' \
-  --set run.time_step=1e-6s "${quick[@]}"
+  --set run.time_step=1e-6s --set numerics.implicit_stiffness=false "${quick[@]}"
 grep -q '"status": "failed"' "$refused/summary.json" || fail "no failed summary.json after refuse"
 grep -q 'stability bound' "$refused/summary.json" || fail "summary.json does not say why"
 # 7. calender --resume continues a calendering's checkpoint, with nothing else on the line;

@@ -338,10 +338,35 @@ TEST(Config, CriticalStepFractionAboveHalfOnlySemiImplicit) {
               std::string::npos);
 }
 
-// numerics.implicit_stiffness (docs/model.md M-9.1) joins the semi-implicit kick only.
+// numerics.implicit_stiffness (docs/model.md M-9.1) joins the semi-implicit kick only; "auto" (the
+// default) turns it on where the guard alone sets the step (the paper's scheme) and off elsewhere.
 TEST(Config, ImplicitStiffnessOnlyWithTheSemiImplicitKick) {
-    EXPECT_FALSE(load_config("", "t", {}).implicit_stiffness);
-    EXPECT_TRUE(load_config("", "t", {"numerics.implicit_stiffness=true"}).implicit_stiffness);
+    const Config d = load_config("", "t", {});
+    EXPECT_FALSE(d.implicit_stiffness.has_value());
+    EXPECT_TRUE(d.implicit_stiffness_on());
+    EXPECT_FALSE(
+        load_config("", "t", {"numerics.implicit_stiffness=false"}).implicit_stiffness_on());
+    EXPECT_TRUE(load_config("", "t", {"numerics.implicit_stiffness=true"}).implicit_stiffness_on());
+    EXPECT_TRUE(
+        load_config("", "t", {"numerics.implicit_stiffness=\"auto\""}).implicit_stiffness_on());
+    // "auto" elsewhere: off, and no refusal.
+    EXPECT_FALSE(
+        load_config("", "t", {"numerics.integrator=\"explicit\""}).implicit_stiffness_on());
+    EXPECT_FALSE(
+        load_config("", "t", {"numerics.integrator=\"quasi_static\""}).implicit_stiffness_on());
+    EXPECT_FALSE(load_config("", "t", {"scaling.scheme=\"force_ratio\""}).implicit_stiffness_on());
+    EXPECT_TRUE(
+        load_config("", "t", {"scaling.scheme=\"force_ratio\"", "numerics.implicit_stiffness=true"})
+            .implicit_stiffness_on());
+    // Written out and read back, "auto" stays "auto" (a resumed run re-derives it).
+    EXPECT_FALSE(load_config(to_toml(d), "t", {}).implicit_stiffness.has_value());
+    EXPECT_EQ(
+        load_config(to_toml(load_config("", "t", {"numerics.implicit_stiffness=false"})), "t", {})
+            .implicit_stiffness,
+        std::optional<bool>(false));
+    EXPECT_NE(input_error("", {"numerics.implicit_stiffness=\"yes\""})
+                  .find("must be true, false or \"auto\""),
+              std::string::npos);
     for (const char* integrator : {"explicit", "quasi_static"}) {
         const std::string m =
             input_error("", {std::string("numerics.integrator=\"") + integrator + "\"",

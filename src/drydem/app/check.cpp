@@ -306,7 +306,7 @@ void print_check(const Config& c) {
         "  integrator                {} (numerics.integrator), largest step {:.3g} s (scaled)\n",
         c.integrator, cap);
     if (c.integrator == "quasi_static") print_quasi_static_step(c, s);
-    if (c.implicit_stiffness)
+    if (c.implicit_stiffness_on())
         fmt::print("  implicit self-stiffness   on (numerics.implicit_stiffness): each particle's "
                    "contact and body stiffness is in its kick, so no stiffness bounds the step; "
                    "the step is run.time_step, an accuracy choice to check by halving it "

@@ -232,7 +232,7 @@ void check_critical_step_fraction(const Config& c, const std::vector<std::string
                            "max_displacement sets it); leave the key at 0",
                            f),
                {"numerics.critical_step_fraction", "numerics.integrator"}, bare);
-    if (c.implicit_stiffness && c.integrator != "semi_implicit")
+    if (c.implicit_stiffness.value_or(false) && c.integrator != "semi_implicit")
         refuse(c,
                fmt::format("numerics.implicit_stiffness = true with numerics.integrator = "
                            "\"{}\": the self-stiffness joins the semi-implicit kick only "

@@ -88,7 +88,7 @@ EngineSettings engine_settings(const Config& c, const Film& film, int ranks) {
     es.threads = c.threads;
     es.sort_every = c.sort_every;
     es.overlap_limit = c.overlap_limit;
-    es.implicit_stiffness = c.implicit_stiffness;
+    es.implicit_stiffness = c.implicit_stiffness_on();
     es.ranks = ranks;
     return es;
 }

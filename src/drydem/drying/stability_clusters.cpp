@@ -54,7 +54,7 @@ Simulation cluster_simulation(const Config& c, const FilmRecipe& recipe, const R
                               double skin) {
     EngineSettings es;
     es.integrator = integrator_of(c);
-    es.implicit_stiffness = c.implicit_stiffness;
+    es.implicit_stiffness = c.implicit_stiffness_on();
     es.dt = c.time_step_cap();
     es.skin = skin >= 0.0 ? skin : c.neighbor_skin();
     es.threads = 1;

@@ -144,6 +144,14 @@ void assign(Config& c, const Field& f, const toml::node& n,
                     throw InputError(
                         fmt::format("config key '{}': {} must be true or false", f.key, text));
                 c.*member = v->get();
+            } else if constexpr (std::is_same_v<T, std::optional<bool>>) {
+                if (auto b = n.as_boolean())
+                    c.*member = b->get();
+                else if (auto s = n.as_string(); s && s->get() == "auto")
+                    c.*member = std::nullopt;
+                else
+                    throw InputError(fmt::format(
+                        "config key '{}': {} must be true, false or \"auto\"", f.key, text));
             } else if constexpr (std::is_same_v<T, std::string>) {
                 auto v = n.as_string();
                 if (!v)
@@ -552,6 +560,11 @@ std::string to_toml(const Config& c) {
                 } else if constexpr (std::is_same_v<T, std::uint64_t> || std::is_same_v<T, int>) {
                     t.insert(leaf,
                              std::int64_t(v)); // TOML integers are 64-bit signed (seed <= 2^63 - 1)
+                } else if constexpr (std::is_same_v<T, std::optional<bool>>) {
+                    if (v)
+                        t.insert(leaf, *v);
+                    else
+                        t.insert(leaf, "auto");
                 } else {
                     t.insert(leaf, v);
                 }

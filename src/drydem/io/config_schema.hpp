@@ -41,8 +41,11 @@ constexpr Allowed above(double lo, double hi) { return {lo, hi, true, {}, false}
 /// One of the strings in `choices` ("a|b").
 constexpr Allowed one_of(std::string_view choices) { return {-inf, inf, false, choices, false}; }
 
+/// The C++ type of each kind of key. std::optional<bool>: true, false or "auto" (nullopt: the
+/// setting follows from other keys; Config's accessor says how).
 using Member = std::variant<double Config::*, int Config::*, std::uint64_t Config::*,
-                            bool Config::*, std::string Config::*, std::vector<double> Config::*>;
+                            bool Config::*, std::optional<bool> Config::*, std::string Config::*,
+                            std::vector<double> Config::*>;
 
 /// One key of the configuration.
 struct Field {

@@ -91,6 +91,8 @@ std::string allowed_text(const Field& f) {
             using T = std::remove_cvref_t<decltype(Config{}.*member)>;
             if constexpr (std::is_same_v<T, bool>) {
                 return "true, false";
+            } else if constexpr (std::is_same_v<T, std::optional<bool>>) {
+                return "true, false, `\"auto\"`";
             } else if constexpr (std::is_same_v<T, std::string>) {
                 std::string list;
                 for (std::string_view ch : f.choices())
