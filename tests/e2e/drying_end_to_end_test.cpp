@@ -200,6 +200,7 @@ TEST(DryingEndToEnd, ForceRatioSchemeRunsAndKeepsTheForceRatios) {
     const auto dir = testing_support::temp_dir();
     const nlohmann::json s = run_stopped(c, dir, 3000);
     EXPECT_EQ(s["scaling"]["scheme"], "force_ratio");
+    EXPECT_EQ(s["implicit_stiffness"], false); // "auto": off in the force-ratio scheme
     EXPECT_NEAR(s["scaling"]["capillary_factor"].get<double>(), 1e4, 1e-6);
     EXPECT_NEAR(s["scaling"]["hamaker_cb_cb_J"]["scaled"].get<double>(), 4.64e-16, 1e-24);
     EXPECT_NEAR(s["scaling"]["youngs_modulus_cb_Pa"]["scaled"].get<double>(), 2.84e11, 1.0);
@@ -285,4 +286,6 @@ TEST(DryingEndToEnd, StopRequestEndsTheRunAndKeepsOutputs) {
     EXPECT_EQ(summary["status"], "failed");
     EXPECT_EQ(summary["stop_reason"], "interrupted");
     EXPECT_TRUE(std::filesystem::exists(dir / "final.csv"));
+    // The paper's scheme: "auto" turned the implicit self-stiffness on, and the record says so.
+    EXPECT_EQ(summary["implicit_stiffness"], true);
 }

@@ -152,6 +152,8 @@ void add_method(const RunContext& ctx, const RunEnd& e, json& s) {
                                                   c.dryer_preset, c.dryer_final_porosity)
                                     : std::string("dryer.shrinkage_rates");
     s["integrator"] = c.integrator;
+    // "auto" resolved: whether the self-stiffness joined the kick (docs/model.md M-9.1).
+    s["implicit_stiffness"] = sim.settings().implicit_stiffness;
     s["time_step_s"] = largest_time_step(c, ctx.film.scaled);
     s["time_step_min_s"] = e.guard.min_time_step();
     if (sim.settings().integrator == Integrator::quasi_static) {

@@ -29,8 +29,10 @@ void NeighborList::bin(const ParticleStore& p, const Box& box, double cell_size)
     const std::size_t ncell = std::size_t(g.nx) * g.ny * g.nz;
     g.cell_start.assign(ncell + 1, 0);
     g.cell_of.resize(n);
+    g.wrapped = true;
     for (std::size_t i = 0; i < n; ++i) {
         const Vec3& x = p.position[i];
+        if (!(x.x >= 0.0 && x.x < box.lx && x.y >= 0.0 && x.y < box.ly)) g.wrapped = false;
         const int ix = std::min(g.nx - 1, std::max(0, int(x.x / g.cx)));
         const int iy = std::min(g.ny - 1, std::max(0, int(x.y / g.cy)));
         const int iz = std::min(g.nz - 1, std::max(0, int((x.z - zlo) / g.cz)));
@@ -42,6 +44,23 @@ void NeighborList::bin(const ParticleStore& p, const Box& box, double cell_size)
     std::vector<std::uint32_t>& fill = order_;
     fill.assign(g.cell_start.begin(), g.cell_start.end() - 1);
     for (std::size_t i = 0; i < n; ++i) g.cell_items[fill[g.cell_of[i]]++] = std::uint32_t(i);
+}
+
+void NeighborList::keep_previous_list(const ParticleStore& p) {
+    if (carry_pending_) {
+        carry_pending_ = false; // carry_from() has set the old list up
+        return;
+    }
+    const std::size_t n = p.size();
+    old_offset_.swap(offset_);
+    old_state_.swap(state_);
+    old_partner_id_.resize(partner_.size());
+    for (std::size_t s = 0; s < partner_.size(); ++s) old_partner_id_[s] = p.id[partner_[s]];
+    std::uint32_t max_id = 0;
+    for (std::size_t i = 0; i < n; ++i) max_id = std::max(max_id, p.id[i]);
+    old_row_of_id_.assign(std::size_t(max_id) + 1, UINT32_MAX);
+    if (!old_offset_.empty())
+        for (std::size_t i = 0; i < n; ++i) old_row_of_id_[p.id[i]] = std::uint32_t(i);
 }
 
 void NeighborList::sort_by_cell(ParticleStore& p) {

@@ -112,6 +112,7 @@ private:
     struct Grid {
         int nx = 1, ny = 1, nz = 1;
         double cx = 1, cy = 1, cz = 1, zlo = 0;
+        bool wrapped = true; ///< every particle inside [0, lx) x [0, ly): inside its cell's box
         std::vector<std::uint32_t> cell_start, cell_items, cell_of;
         [[nodiscard]] int index(int ix, int iy, int iz) const { return (iz * ny + iy) * nx + ix; }
     };
@@ -126,6 +127,8 @@ private:
         return std::isfinite(smallest) ? smallest + skin_ : 1e-6;
     }
     void sort_by_cell(ParticleStore& p);
+    /// Keeps the present list, keyed by ids, for carry_states (unless carry_from() set it up).
+    void keep_previous_list(const ParticleStore& p);
     void carry_states(const ParticleStore& p);
 
     /// Rows per block of the build's search; each block's pairs, kept between builds.
@@ -162,20 +165,7 @@ template <class RangeFn, class OwnerRangeFn>
 void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
                          OwnerRangeFn&& owner_range, bool sort, std::size_t owned) {
     const std::size_t n = p.size();
-    if (carry_pending_) {
-        carry_pending_ = false; // carry_from() has set the old list up
-    } else {
-        // Keep the previous list, keyed by ids, to carry pair states over.
-        old_offset_.swap(offset_);
-        old_state_.swap(state_);
-        old_partner_id_.resize(partner_.size());
-        for (std::size_t s = 0; s < partner_.size(); ++s) old_partner_id_[s] = p.id[partner_[s]];
-        std::uint32_t max_id = 0;
-        for (std::size_t i = 0; i < n; ++i) max_id = std::max(max_id, p.id[i]);
-        old_row_of_id_.assign(std::size_t(max_id) + 1, UINT32_MAX);
-        if (!old_offset_.empty())
-            for (std::size_t i = 0; i < n; ++i) old_row_of_id_[p.id[i]] = std::uint32_t(i);
-    }
+    keep_previous_list(p);
 
     const double cell = search_cell(p, owner_range);
     bin(p, box, cell);
@@ -201,10 +191,29 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
         const int y0 = 2 * wy + 1 >= g.ny ? 0 : iy - wy,
                   y1 = 2 * wy + 1 >= g.ny ? g.ny - 1 : iy + wy;
         const int z0 = std::max(0, iz - wz), z1 = std::min(g.nz - 1, iz + wz);
-        for (int kz = z0; kz <= z1; ++kz)
+        // Cells whose nearest point lies beyond the search radius hold no partner: skipped (a
+        // large particle's cubic stencil is ~2.5x its sphere). Along a periodic axis whose
+        // stencil is narrower than the grid, the unwrapped offset is a minimum image (|dx| <=
+        // (w + 1) c <= L/2), so the bound holds; a stencil as wide as the grid is not pruned.
+        // The margin covers the rounding of the binning; the list is the same, pair for pair.
+        // Positions outside the period (clamped into an edge cell) turn the pruning off.
+        const double s2 = search * search * (1.0 + 1e-9);
+        const bool prune_x = g.wrapped && 2 * wx + 1 < g.nx,
+                   prune_y = g.wrapped && 2 * wy + 1 < g.ny;
+        const auto outside = [](double u, int k, double width) {
+            const double lo = k * width, hi = lo + width;
+            return u < lo ? lo - u : (u > hi ? u - hi : 0.0);
+        };
+        for (int kz = z0; kz <= z1; ++kz) {
+            const double gz = g.wrapped ? outside(xi.z - g.zlo, kz, g.cz) : 0.0, gz2 = gz * gz;
+            if (gz2 > s2) continue;
             for (int ky = y0; ky <= y1; ++ky) {
+                const double gy = prune_y ? outside(xi.y, ky, g.cy) : 0.0, gzy2 = gz2 + gy * gy;
+                if (gzy2 > s2) continue;
                 const int cy = ((ky % g.ny) + g.ny) % g.ny;
                 for (int kx = x0; kx <= x1; ++kx) {
+                    const double gx = prune_x ? outside(xi.x, kx, g.cx) : 0.0;
+                    if (gzy2 + gx * gx > s2) continue;
                     const int cx = ((kx % g.nx) + g.nx) % g.nx;
                     const int cc = g.index(cx, cy, kz);
                     for (std::uint32_t k = g.cell_start[cc]; k < g.cell_start[cc + 1]; ++k) {
@@ -217,6 +226,7 @@ void NeighborList::build(ParticleStore& p, const Box& box, RangeFn&& range,
                     }
                 }
             }
+        }
     };
     // One search per row into fixed blocks of rows, then the blocks copied in row order: the
     // build stays parallel and the slot order deterministic. (A count pass and a fill pass, each
