@@ -204,6 +204,48 @@ TEST(PairLawConformance, EveryLawOfTheListKeepsTheContract) {
             check_every_law(p, gap, std::make_index_sequence<std::tuple_size_v<AllLaws>>{});
 }
 
+// The pair loop takes the kick's self-stiffness from the same evaluation as the force
+// (PairLaws::force with `tangent`): to the bit, it is PairLaws::tangent of the state that step
+// leaves, with the force unchanged, for sticking and sliding, elastic and elastic-plastic
+// contacts, and at gaps.
+TEST(PairLawConformance, TheFusedTangentIsTheTangentOfTheStateLeft) {
+    const Vec3 t = perp(Vec3{1.0, 0.0, 0.0}, kNormal) / norm(perp(Vec3{1.0, 0.0, 0.0}, kNormal));
+    int sticking = 0, sliding = 0;
+    for (Pair p : film_pairs())
+        for (double yield : {0.0, 2e8}) {
+            PairLaws::params<HertzMindlinLaw>(p.params).yield_pressure = yield;
+            for (double gap : {-0.01 * p.r_j, -0.002 * p.r_j, 0.02e-6, 0.3e-6})
+                for (double speed : {1e-6, 1.0}) { // 1 pm a step sticks, 1 um slides
+                    const std::string where = p.name + ", p_y " + std::to_string(yield) +
+                                              ", gap " + std::to_string(gap * 1e9) +
+                                              " nm, speed " + std::to_string(speed);
+                    const PairGeometry g = at(p, gap, {speed * t, {}, {}, {}});
+                    PairState fused{}, apart{};
+                    PairResistance r_fused, r_apart, k_fused;
+                    const PairForce f_fused =
+                        PairLaws::force(g, p.params, fused, 1e-6, &r_fused, &k_fused);
+                    const PairForce f_apart = PairLaws::force(g, p.params, apart, 1e-6, &r_apart);
+                    const PairResistance k_apart = PairLaws::tangent(g, p.params, apart);
+                    EXPECT_EQ(k_fused.normal, k_apart.normal) << where;
+                    EXPECT_EQ(k_fused.sliding, k_apart.sliding) << where;
+                    EXPECT_EQ(k_fused.rolling, k_apart.rolling) << where;
+                    EXPECT_EQ(k_fused.twisting, k_apart.twisting) << where;
+                    EXPECT_EQ(r_fused.normal, r_apart.normal) << where;
+                    EXPECT_EQ(r_fused.sliding, r_apart.sliding) << where;
+                    EXPECT_EQ(f_fused.force_i.x, f_apart.force_i.x) << where;
+                    EXPECT_EQ(f_fused.force_i.y, f_apart.force_i.y) << where;
+                    EXPECT_EQ(f_fused.force_i.z, f_apart.force_i.z) << where;
+                    EXPECT_EQ(f_fused.torque_j.z, f_apart.torque_j.z) << where;
+                    if (gap < 0.0) {
+                        EXPECT_GT(k_fused.normal, 0.0) << where;
+                        (k_fused.sliding > 0.0 ? sticking : sliding) += 1;
+                    }
+                }
+        }
+    EXPECT_EQ(sticking, 8); // both branches of the Coulomb test were reached
+    EXPECT_EQ(sliding, 8);
+}
+
 // The walk above reaches every law the list holds.
 TEST(PairLawConformance, TheWalkCoversTheList) {
     EXPECT_EQ(std::tuple_size_v<AllLaws>, 4u);

@@ -827,9 +827,13 @@ void Simulation::pair_loop(const List& list, std::size_t& contacts_out, double& 
                 PairForce f;
                 if constexpr (SelfBlocks) {
                     PairResistance r;
-                    f = pair_interaction(g, row[p.species[j]], state, dt, &r);
-                    if (settings_.implicit_stiffness)
-                        add_self_stiffness(r, PairLaws::tangent(g, row[p.species[j]], state), dt);
+                    if (settings_.implicit_stiffness) {
+                        PairResistance tangent; // the laws' stiffness, from the same evaluation
+                        f = pair_interaction(g, row[p.species[j]], state, dt, &r, &tangent);
+                        add_self_stiffness(r, tangent, dt);
+                    } else {
+                        f = pair_interaction(g, row[p.species[j]], state, dt, &r);
+                    }
                     if (r.normal > 0.0 || r.sliding > 0.0 || r.rolling > 0.0) {
                         add_self_block(di, r, g.n, r.lever_i, 1.0);
                         add_self_block(local ? block[j] : own.block[j], r, g.n, r.lever_j, -1.0);

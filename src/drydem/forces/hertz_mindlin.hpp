@@ -156,6 +156,10 @@ struct ContactForce {
     Vec3 torque_j;
     double normal_force;
     double damping_n, damping_t;
+    /// The conservative normal force and its slope dF_n/dδ at the deepest overlap kept, and S_t:
+    /// what the contact's tangent (hertz_mindlin_tangent) needs, so the pair loop does not
+    /// evaluate the law twice.
+    double elastic_force, normal_stiffness, s_t;
 };
 
 /// What a contact keeps: the tangential spring ξ and, with plasticity, the deepest overlap
@@ -168,26 +172,39 @@ struct ContactHistory {
     }
 };
 
+/// Whether a spring ξ of stiffness S_t sits at the Coulomb limit S_t |ξ| = μ F_n (as the law
+/// leaves it after a cut), to rounding: the contact slides.
+inline bool spring_at_coulomb_limit(double s_t, const Vec3& spring, double f_coulomb) {
+    return s_t * norm(spring) >= (1.0 - 1e-6) * f_coulomb && norm2(spring) > 0.0;
+}
+
 /// Whether a contact at this overlap slides: its spring ξ sits at the Coulomb limit
-/// S_t |ξ| = μ F_n (as the law leaves it after a cut; F_n elastic, at rest), to rounding.
+/// S_t |ξ| = μ F_n (F_n elastic, at rest).
 inline bool hertz_mindlin_sliding(const HertzMindlinCoefficients& co, const ContactSpheres& spheres,
                                   double r_eff, double overlap, const HertzMindlinParams& p,
                                   const ContactHistory& h) {
     const double f_coulomb =
         p.friction * contact_normal(co, spheres, r_eff, overlap, p, h.max_overlap).force;
-    return co.s_t * norm(h.spring) >= (1.0 - 1e-6) * f_coulomb && norm2(h.spring) > 0.0;
+    return spring_at_coulomb_limit(co.s_t, h.spring, f_coulomb);
 }
 
-/// The quasi-static step's stiffness of a contact (pair form): dF_n/dδ, and S_t while it sticks;
-/// a sliding contact resists no further tangential motion (its force stays μ F_n).
+/// The stiffness of a contact (pair form) given its normal slope dF_n/dδ, S_t, its elastic
+/// normal force and its spring: dF_n/dδ, and S_t while it sticks; a sliding contact resists no
+/// further tangential motion (its force stays μ F_n).
+inline PairResistance contact_tangent(double s_n, double s_t, double f_elastic, const Vec3& spring,
+                                      double friction) {
+    return {s_n, spring_at_coulomb_limit(s_t, spring, friction * f_elastic) ? 0.0 : s_t,
+            0.0, 0.0,
+            0.0, 0.0};
+}
+
+/// The quasi-static step's stiffness of a contact (pair form) at an overlap, given what it keeps.
 inline PairResistance hertz_mindlin_tangent(const HertzMindlinCoefficients& co,
                                             const ContactSpheres& spheres, double r_eff,
                                             double overlap, const HertzMindlinParams& p,
                                             const ContactHistory& h) {
-    const double s_n = contact_normal(co, spheres, r_eff, overlap, p, h.max_overlap).stiffness;
-    return {s_n, hertz_mindlin_sliding(co, spheres, r_eff, overlap, p, h) ? 0.0 : co.s_t,
-            0.0, 0.0,
-            0.0, 0.0};
+    const ElasticPlasticNormal n = contact_normal(co, spheres, r_eff, overlap, p, h.max_overlap);
+    return contact_tangent(n.stiffness, co.s_t, n.force, h.spring, p.friction);
 }
 
 /// Evaluates the Hertz-Mindlin law and advances the contact's history h by one step dt.
@@ -203,15 +220,21 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
     const double v_n = dot(k.v_rel, n);
     // M-2.2: elastic (4/3) E* sqrt(R*) δ^{3/2} = (2/3) S_n δ (or M-2.8 with yield), plus viscous
     // damping; not clipped.
-    double f_elastic;
+    double f_elastic, s_n = co.s_n;
     if (p.yield_pressure > 0.0) {
         h.max_overlap = std::max(h.max_overlap, k.overlap);
-        f_elastic = contact_normal(co, k.spheres, k.r_eff, k.overlap, p, h.max_overlap).force;
+        const ElasticPlasticNormal ep =
+            contact_normal(co, k.spheres, k.r_eff, k.overlap, p, h.max_overlap);
+        f_elastic = ep.force;
+        s_n = ep.stiffness;
     } else {
         f_elastic = hertz_elastic_force(co, k.overlap);
     }
     const double fn_mag = f_elastic + gamma_n * v_n;
     ContactForce out;
+    out.elastic_force = f_elastic;
+    out.normal_stiffness = s_n;
+    out.s_t = s_t;
     out.normal_force = std::abs(fn_mag);
     out.damping_n = gamma_n;
     out.damping_t = gamma_t;
@@ -254,10 +277,12 @@ inline ContactForce hertz_mindlin_contact(const ContactKinematics& k, const Hert
 }
 
 /// Particle-particle contact (δ = -h > 0), lever arms c = r - δ/2. `damping` receives the
-/// viscous part as a resistance (resistance.hpp pair form).
+/// viscous part as a resistance (resistance.hpp pair form); `tangent` the contact's stiffness
+/// after the step, as hertz_mindlin_tangent gives it from the history the step leaves.
 inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& p,
                                ContactHistory& history, double dt,
-                               PairResistance* damping = nullptr) {
+                               PairResistance* damping = nullptr,
+                               PairResistance* tangent = nullptr) {
     const double overlap = -g.gap;
     const ContactKinematics k{g.n,
                               overlap,
@@ -274,6 +299,9 @@ inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& 
         damping->normal += c.damping_n;
         damping->sliding += c.damping_t;
     }
+    if (tangent)
+        *tangent += contact_tangent(c.normal_stiffness, c.s_t, c.elastic_force, history.spring,
+                                    p.friction);
     return {c.force_i, c.torque_i, c.torque_j};
 }
 
@@ -310,9 +338,10 @@ struct HertzMindlinLaw {
     static double range(const Params&, double, double) { return 0.0; } // acts in overlap only
     [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p,
                                                         State& s, double dt, PairForce& f,
-                                                        PairResistance* damping) {
+                                                        PairResistance* damping,
+                                                        PairResistance* tangent = nullptr) {
         if (g.gap < 0.0)
-            f += hertz_mindlin(g, p, s, dt, damping);
+            f += hertz_mindlin(g, p, s, dt, damping, tangent);
         else
             s = State{};
     }

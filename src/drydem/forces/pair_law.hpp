@@ -23,11 +23,15 @@
 //                           present pair: the law picks the one that bounds its rate
 //   keeps(s)                whether s holds something (carried over list rebuilds, checkpointed)
 //   limits                  the valid interval of each parameter (law_limits.hpp)
-// and optionally, for the quasi-static step (engine/quasi_static.hpp), the linearisation given
-// what the law keeps (a contact whose spring sits at the Coulomb limit slides: it has no
-// tangential stiffness and no tangential damping):
+// and optionally, for the quasi-static step (engine/quasi_static.hpp) and the kick's implicit
+// self-stiffness (M-9.1), the linearisation given what the law keeps (a contact whose spring sits
+// at the Coulomb limit slides: it has no tangential stiffness and no tangential damping):
 //   tangent(g, p, s)        -dF/dx at g; without it, stiffness(g, g, p)
 //   resistance(g, p, s)     the resistance at g; without it, resistance(g, p)
+//   add_force(g, p, s, dt, f, R, K)  add_force that also adds tangent(g, p, s) of the state it
+//                           leaves to *K when K is given, from what it computed for the force
+//                           (the pair loop then evaluates a law once, not twice); without it,
+//                           the list calls add_force and then tangent
 // A law knows nothing of the application's configuration: its parameters are mapped from the
 // configuration in one place, drying/law_parameters.cpp, beside the list's registration.
 // Every law of the list sees the same PairGeometry, computed once per pair. A law's state lives
@@ -97,10 +101,13 @@ struct PairLawList {
     /// dissipative parts, with the lever arms r + h/2 that every dissipative pair law shares
     /// (centres to the mid-plane of the gap; r - δ/2 in overlap). Always inlined into the pair
     /// loop, like the laws were before they had a list: an out-of-line call here costs 10-20 %.
+    /// With `tangent`, it also receives the sum of the laws' tangents (`tangent` below) at the
+    /// state the step leaves, without levers.
     [[gnu::always_inline]] static inline PairForce force(const PairGeometry& g, const Params& p,
                                                          State& s, double dt,
-                                                         PairResistance* resistance = nullptr) {
-        PairForce f = force_of(all{}, g, p, s, dt, resistance);
+                                                         PairResistance* resistance = nullptr,
+                                                         PairResistance* tangent = nullptr) {
+        PairForce f = force_of(all{}, g, p, s, dt, resistance, tangent);
         if (resistance) set_levers(*resistance, g);
         return f;
     }
@@ -161,12 +168,27 @@ private:
         ((h = std::max(h, at<K>::range(member_at<K>(p), r_i, r_j))), ...);
         return h;
     }
+    template <std::size_t K>
+    [[gnu::always_inline]] static inline void add_force_at(const PairGeometry& g, const Params& p,
+                                                           State& s, double dt, PairForce& f,
+                                                           PairResistance* resistance,
+                                                           PairResistance* tangent) {
+        if constexpr (requires {
+                          at<K>::add_force(g, member_at<K>(p), state_at<K>(s), dt, f, resistance,
+                                           tangent);
+                      }) {
+            at<K>::add_force(g, member_at<K>(p), state_at<K>(s), dt, f, resistance, tangent);
+        } else {
+            at<K>::add_force(g, member_at<K>(p), state_at<K>(s), dt, f, resistance);
+            if (tangent) *tangent += tangent_at<K>(g, p, s);
+        }
+    }
     template <std::size_t... K>
     [[gnu::always_inline]] static inline PairForce
     force_of(std::index_sequence<K...>, const PairGeometry& g, const Params& p, State& s, double dt,
-             PairResistance* resistance) {
+             PairResistance* resistance, PairResistance* tangent) {
         PairForce f{};
-        (at<K>::add_force(g, member_at<K>(p), state_at<K>(s), dt, f, resistance), ...);
+        (add_force_at<K>(g, p, s, dt, f, resistance, tangent), ...);
         return f;
     }
     template <std::size_t... K>
@@ -199,7 +221,9 @@ private:
         return r;
     }
     template <std::size_t K>
-    static PairResistance tangent_at(const PairGeometry& g, const Params& p, const State& s) {
+    [[gnu::always_inline]] static inline PairResistance tangent_at(const PairGeometry& g,
+                                                                   const Params& p,
+                                                                   const State& s) {
         if constexpr (requires { at<K>::tangent(g, member_at<K>(p), law_member<K>(s)); })
             return at<K>::tangent(g, member_at<K>(p), law_member<K>(s));
         else

@@ -53,12 +53,15 @@ struct VanDerWaalsLaw {
     static double range(const Params& p, double r_i, double r_j) {
         return van_der_waals_range(p, r_i, r_j);
     }
-    /// Central: only the force, no torques to add.
+    /// Central: only the force, no torques to add; `tangent` receives the snap-in's rate at the
+    /// present gap (as `stiffness` below).
     [[gnu::always_inline]] static inline void add_force(const PairGeometry& g, const Params& p,
                                                         State&, double, PairForce& f,
-                                                        PairResistance*) {
+                                                        PairResistance*,
+                                                        PairResistance* tangent = nullptr) {
         if (p.hamaker == 0.0 || g.gap > p.cutoff_gap) return;
         f.force_i += van_der_waals(g, p).force_i;
+        if (tangent) tangent->normal += van_der_waals_stiffness(g, p);
     }
     static PairResistance resistance(const PairGeometry&, const Params&) { return {}; }
     /// The snap-in at the present gap: its stiffness is negative (the attraction grows as the gap
