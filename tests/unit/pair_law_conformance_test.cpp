@@ -216,9 +216,9 @@ TEST(PairLawConformance, TheFusedTangentIsTheTangentOfTheStateLeft) {
             PairLaws::params<HertzMindlinLaw>(p.params).yield_pressure = yield;
             for (double gap : {-0.01 * p.r_j, -0.002 * p.r_j, 0.02e-6, 0.3e-6})
                 for (double speed : {1e-6, 1.0}) { // 1 pm a step sticks, 1 um slides
-                    const std::string where = p.name + ", p_y " + std::to_string(yield) +
-                                              ", gap " + std::to_string(gap * 1e9) +
-                                              " nm, speed " + std::to_string(speed);
+                    const std::string where = p.name + ", p_y " + std::to_string(yield) + ", gap " +
+                                              std::to_string(gap * 1e9) + " nm, speed " +
+                                              std::to_string(speed);
                     const PairGeometry g = at(p, gap, {speed * t, {}, {}, {}});
                     PairState fused{}, apart{};
                     PairResistance r_fused, r_apart, k_fused;

@@ -711,6 +711,18 @@ void add_self_stiffness(BodyResistance& r, const BodyResistance& k, double dt) {
     r.rotation_n += dt * k.rotation_n;
 }
 
+// The pair's force, its resistance r and, added to r, Δt times its laws' stiffness (M-9.1),
+// from one evaluation of the laws. Inlined with the tangent pointer a constant: a pointer chosen
+// at run time costs the pair loop ~5 %.
+[[gnu::always_inline]] inline PairForce stiff_interaction(const PairGeometry& g,
+                                                          const PairParams& pp, PairState& state,
+                                                          double dt, PairResistance& r) {
+    PairResistance tangent;
+    const PairForce f = pair_interaction(g, pp, state, dt, &r, &tangent);
+    add_self_stiffness(r, tangent, dt);
+    return f;
+}
+
 // The slot of the neighbour list that entry k of the walked list names.
 std::uint32_t slot_of(const NearList& l, std::uint32_t k) { return l.slot(k); }
 std::uint32_t slot_of(const NeighborList&, std::uint32_t k) { return k; }
@@ -827,13 +839,9 @@ void Simulation::pair_loop(const List& list, std::size_t& contacts_out, double& 
                 PairForce f;
                 if constexpr (SelfBlocks) {
                     PairResistance r;
-                    if (settings_.implicit_stiffness) {
-                        PairResistance tangent; // the laws' stiffness, from the same evaluation
-                        f = pair_interaction(g, row[p.species[j]], state, dt, &r, &tangent);
-                        add_self_stiffness(r, tangent, dt);
-                    } else {
-                        f = pair_interaction(g, row[p.species[j]], state, dt, &r);
-                    }
+                    const PairParams& pp = row[p.species[j]];
+                    f = settings_.implicit_stiffness ? stiff_interaction(g, pp, state, dt, r)
+                                                     : pair_interaction(g, pp, state, dt, &r);
                     if (r.normal > 0.0 || r.sliding > 0.0 || r.rolling > 0.0) {
                         add_self_block(di, r, g.n, r.lever_i, 1.0);
                         add_self_block(local ? block[j] : own.block[j], r, g.n, r.lever_j, -1.0);

@@ -300,8 +300,8 @@ inline PairForce hertz_mindlin(const PairGeometry& g, const HertzMindlinParams& 
         damping->sliding += c.damping_t;
     }
     if (tangent)
-        *tangent += contact_tangent(c.normal_stiffness, c.s_t, c.elastic_force, history.spring,
-                                    p.friction);
+        *tangent +=
+            contact_tangent(c.normal_stiffness, c.s_t, c.elastic_force, history.spring, p.friction);
     return {c.force_i, c.torque_i, c.torque_j};
 }
 

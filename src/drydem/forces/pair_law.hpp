@@ -169,10 +169,9 @@ private:
         return h;
     }
     template <std::size_t K>
-    [[gnu::always_inline]] static inline void add_force_at(const PairGeometry& g, const Params& p,
-                                                           State& s, double dt, PairForce& f,
-                                                           PairResistance* resistance,
-                                                           PairResistance* tangent) {
+    [[gnu::always_inline]] static inline void
+    add_force_at(const PairGeometry& g, const Params& p, State& s, double dt, PairForce& f,
+                 PairResistance* resistance, PairResistance* tangent) {
         if constexpr (requires {
                           at<K>::add_force(g, member_at<K>(p), state_at<K>(s), dt, f, resistance,
                                            tangent);
@@ -221,9 +220,8 @@ private:
         return r;
     }
     template <std::size_t K>
-    [[gnu::always_inline]] static inline PairResistance tangent_at(const PairGeometry& g,
-                                                                   const Params& p,
-                                                                   const State& s) {
+    [[gnu::always_inline]] static inline PairResistance
+    tangent_at(const PairGeometry& g, const Params& p, const State& s) {
         if constexpr (requires { at<K>::tangent(g, member_at<K>(p), law_member<K>(s)); })
             return at<K>::tangent(g, member_at<K>(p), law_member<K>(s));
         else
