@@ -8,7 +8,9 @@
 #   2. resumed and stopped again after step N2, then its checkpoint put back to the one of N1:
 #      the folder now holds what SIGKILL after N2 leaves (time-series rows, frames and dump
 #      frames written after the last checkpoint), which a resume must cut back and write again;
-#   3. resumed to the end.
+#   3. resumed to the end;
+#   4. the run stopped after N1, packed and unpacked as bench/study_queue.sh carries an unfinished
+#      run to a fresh machine, resumed to the end: the same files identical.
 # usage: restart_bitwise.sh DRYDEM CONFIG WORKDIR
 set -u
 drydem=$1 config=$2 work=$3
@@ -29,6 +31,16 @@ killed="$work/killed"
 grep -q "stopped after step $n1 " "$killed/summary.json" || { echo "summary does not say where it stopped"; exit 1; }
 cp "$killed/checkpoint/state.bin" "$work/state_n1.bin" || { echo "no checkpoint written"; exit 1; }
 
+# Carried to a fresh machine (bench/study_queue.sh): the run stopped after n1, packed as a run
+# queue carries an unfinished run across sessions and unpacked into a new study folder, resumes
+# below to the same end as the uninterrupted run.
+# shellcheck source=bench/study_queue.sh
+source "$(dirname "$0")/../../bench/study_queue.sh"
+carry_unfinished "$killed" "$work/archive/run" 2>/dev/null
+[[ -f $work/archive/run/carry.tar.gz ]] || { echo "the stopped run was not carried"; exit 1; }
+restore_archived_runs "$work/fresh" "$work/archive" completed 2>/dev/null
+[[ -f $work/fresh/runs/run/checkpoint/state.bin ]] || { echo "the carried run was not restored"; exit 1; }
+
 "$drydem" run --resume "$killed" --stop-after-steps "$n2" --quiet --no-plots
 [[ $? -eq 1 ]] || { echo "resumed run did not stop after step $n2"; exit 1; }
 cmp -s "$killed/checkpoint/state.bin" "$work/state_n1.bin" && { echo "no new checkpoint at step $n2"; exit 1; }
@@ -41,6 +53,12 @@ for f in final.csv timeseries.csv snapshots/dump.lammpstrj snapshots/particles.p
          snapshots/liquid_level.pvd; do
   if cmp -s "$work/straight/$f" "$killed/$f"; then echo "identical: $f"
   else echo "DIFFERENT: $f"; status=1; fi
+done
+"$drydem" run --resume "$work/fresh/runs/run" --quiet --no-plots || { echo "carried run failed"; exit 1; }
+for f in final.csv timeseries.csv snapshots/dump.lammpstrj snapshots/particles.pvd \
+         snapshots/liquid_level.pvd; do
+  if cmp -s "$work/straight/$f" "$work/fresh/runs/run/$f"; then echo "carried, identical: $f"
+  else echo "carried, DIFFERENT: $f"; status=1; fi
 done
 # Resuming needs the checkpoint's own config: extra options are refused (exit 2).
 "$drydem" run --resume "$killed" --set run.seed=3 >/dev/null 2>&1
