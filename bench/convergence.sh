@@ -71,7 +71,10 @@
 #               2026-12-07 (the guarded kick) and with the implicit self-stiffness at the 1e-9 s cap:
 #               whether the main job may take it (THREADS=2: ~15 and ~6 min a seed)
 #   archive:STEP
-#               the runs STEP has finished so far into the archive
+#               the runs STEP has finished so far into the archive, and each run it has stopped
+#               with a checkpoint as carry.tar.gz (bench/study_queue.sh): stop the queue (Ctrl-C
+#               or kill -INT: the runs write their checkpoint), archive the step and commit, and
+#               the next session's machine resumes the run where it stopped
 #
 # usage: bench/convergence.sh STEP...   (then /usr/bin/python3 scripts/convergence_report.py)
 # environment: THREADS (1) threads per run, JOBS (1) runs at a time, SEEDS (1) seeds per step,
