@@ -16,8 +16,9 @@ restore_archived_runs() {
   [[ -d $dir || ! -d $archived ]] && return 0
   for run in "$archived"/*/; do
     if [[ -f $run/carry.tar.gz ]]; then
-      mkdir -p "$dir/runs/$(basename "$run")"
-      tar -xzf "$run/carry.tar.gz" -C "$dir/runs/$(basename "$run")"
+      local into=$dir/runs/$(basename "$run")
+      mkdir -p "$into"
+      tar -xzf "$run/carry.tar.gz" -C "$into"
       echo "== $(basename "$run") restored from its carried checkpoint in $archived" >&2
       continue
     fi
@@ -58,10 +59,10 @@ keep_small_files() {
   cp "$1"/study.json "$1"/study.csv "$2/" 2>/dev/null || true
   local run name dest
   for run in "$1"/runs/*/; do
-    carry_unfinished "${run%/}" "$2/$(basename "$run")"
-    [[ -f $run/summary.json ]] || continue
     name=$(basename "$run")
     dest=$2/$name
+    carry_unfinished "${run%/}" "$dest"
+    [[ -f $run/summary.json ]] || continue
     mkdir -p "$dest/analysis"
     cp "$run/config.toml" "$run/summary.json" "$dest/"
     cp "$run"/analysis/*.json "$run"/analysis/*.csv "$dest/analysis/" 2>/dev/null || true

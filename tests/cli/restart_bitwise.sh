@@ -49,17 +49,18 @@ cp "$work/state_n1.bin" "$killed/checkpoint/state.bin" # as SIGKILL after step n
 "$drydem" run --resume "$killed" --quiet --no-plots || { echo "resumed run failed"; exit 1; }
 grep -q '"resumed": true' "$killed/summary.json" || { echo "summary does not say resumed"; exit 1; }
 status=0
-for f in final.csv timeseries.csv snapshots/dump.lammpstrj snapshots/particles.pvd \
-         snapshots/liquid_level.pvd; do
-  if cmp -s "$work/straight/$f" "$killed/$f"; then echo "identical: $f"
-  else echo "DIFFERENT: $f"; status=1; fi
-done
+# compare_outputs LABEL DIR: the uninterrupted run's outputs against DIR's, byte for byte.
+compare_outputs() {
+  local f
+  for f in final.csv timeseries.csv snapshots/dump.lammpstrj snapshots/particles.pvd \
+           snapshots/liquid_level.pvd; do
+    if cmp -s "$work/straight/$f" "$2/$f"; then echo "$1identical: $f"
+    else echo "$1DIFFERENT: $f"; status=1; fi
+  done
+}
+compare_outputs "" "$killed"
 "$drydem" run --resume "$work/fresh/runs/run" --quiet --no-plots || { echo "carried run failed"; exit 1; }
-for f in final.csv timeseries.csv snapshots/dump.lammpstrj snapshots/particles.pvd \
-         snapshots/liquid_level.pvd; do
-  if cmp -s "$work/straight/$f" "$work/fresh/runs/run/$f"; then echo "carried, identical: $f"
-  else echo "carried, DIFFERENT: $f"; status=1; fi
-done
+compare_outputs "carried, " "$work/fresh/runs/run"
 # Resuming needs the checkpoint's own config: extra options are refused (exit 2).
 "$drydem" run --resume "$killed" --set run.seed=3 >/dev/null 2>&1
 [[ $? -eq 2 ]] || { echo "--resume with --set was not refused with exit code 2"; status=1; }
