@@ -9,7 +9,9 @@ dimensionless groups) and the yardstick (final and relaxed thickness, density, p
 coordination per pair type, pore-size peak and median, when and where the film leaves the level,
 p99 and max overlap), then each knob's series against q_base with the verdict: a difference
 counts as zero below twice the combined standard error of the seeds (one seed: the seed spread of
-q_paper stands in, and the verdict says so).
+q_paper stands in, and the verdict says so). Where two steps share seeds (the same seed starts from
+the same film), the series also gives the paired reading: the mean of the seed-wise differences
+against twice its own standard error, which the film-to-film spread does not blur.
 
 usage: /usr/bin/python3 scripts/convergence_report.py [--data DIR] [--figures DIR]
 """
@@ -64,6 +66,11 @@ SERIES = {
         "q_e7.5_s4", [("q_e7.5_s4", 4.2e-11), ("q_e7.5_s4_is8", 8e-11), ("q_e7.5_s4_is16", 1.6e-10)]),
     "critical-step fraction f at e = 7.5 and S = 4 (numerics.critical_step_fraction)": (
         "q_e7.5_s4", [("q_e7.5_s4_f025", 0.25), ("q_e7.5_s4", 0.5), ("q_e7.5_s4_f065", 0.65)]),
+    # The same steps against the explicit reference, by their mean step: paired by seed, this tells
+    # which integrators give the reference's own films, not only its mean.
+    "mean step (s) at e = 7.5 and S = 4, against the explicit reference (velocity Verlet, 4.8e-11 s)": (
+        "q_e7.5_s4_x", [("q_e7.5_s4_f025", 2.05e-11), ("q_e7.5_s4", 4.21e-11), ("q_e7.5_s4_x", 4.81e-11),
+                        ("q_e7.5_s4_f065", 5.54e-11), ("q_e7.5_s4_is8", 8e-11), ("q_e7.5_s4_is16", 1.6e-10)]),
     # The quasi-static step (issue 30) at the process's own settings (k = b = e = 1): against the
     # explicit reference at e = 24 (the Stokes number of the largest NCM, zone 2, is the knob that
     # differs, with the overlap), and its own two knobs.
@@ -73,7 +80,7 @@ SERIES = {
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
 STEPS = ["q_paper", "q_paper_cap9", "q_paper_f065", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s16",
-         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_b10", "q_e7.5_s4_x", "q_e7.5_s4_is8", "q_e7.5_s4_is16", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "p20", "p20_f065", "p20_sk02", "q_paper_new", "q_paper_x", "q_paper_is5", "q_paper_is10", "p20_is10", "m75", "m75_is10", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
+         "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_b10", "q_e7.5_s4_x", "q_e7.5_s4_is8", "q_e7.5_s4_is16", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "r20_e7.5_s4_x", "p20", "p20_f065", "p20_sk02", "q_paper_new", "q_paper_x", "q_paper_is5", "q_paper_is10", "p20_is10", "m75", "m75_is10", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
 def leaves_level(run_dir: Path, after_s: float):
@@ -104,7 +111,7 @@ def yardstick(r):
     co, ov = a["coordination"], a.get("overlap", {})
     zone2 = r["dimensionless_groups"]["zones"][-1]["simulated"]
     return {
-        "thickness": r["final_thickness_um"], "relaxed": r["final_thickness_relaxed_um"],
+        "run": r["_dir"].name, "thickness": r["final_thickness_um"], "relaxed": r["final_thickness_relaxed_um"],
         "half_solid": r["thickness_half_solid_um"],
         "density": r["density_g_cm3"], "porosity": r["porosity"],
         "z_ncm_ncm": co["ncm_ncm"], "z_ncm_cb": co["ncm_cb"], "z_cb_cb": co["cb_cb"],
@@ -128,6 +135,23 @@ COLUMNS = [("thickness", "final thickness (µm)", 2), ("relaxed", "relaxed (µm)
            ("z_cb_cb", "Z CB-CB", 2), ("psd_median", "pore median (µm)", 3), ("t_leave", "leaves level (s)", 2),
            ("level_leave", "at level (µm)", 2), ("p99", "p99 overlap", 3), ("max", "max overlap", 3),
            ("p99_peak", "peak p99 overlap (time series)", 3)]
+
+
+# The quantities of the paired reading (the yardstick's structure, beside the thickness).
+PAIRED = [("thickness", "final (µm)", 2), ("half_solid", "half-solid (µm)", 2), ("density", "density (g/cm³)", 3),
+          ("z_ncm_cb", "Z NCM-CB", 2), ("z_cb_cb", "Z CB-CB", 2), ("psd_median", "pore median (µm)", 3)]
+
+
+def paired_difference(runs_a, runs_b, key):
+    """Seed-wise differences a − b over the runs both steps have (same run name: same seed, same
+    initial film). Returns (mean, twice its standard error, rms of the differences, n); the error and
+    the rms are None below two pairs."""
+    b = {y["run"]: y[key] for y in runs_b if y[key] is not None}
+    d = [y[key] - b[y["run"]] for y in runs_a if y["run"] in b and y[key] is not None]
+    m, sd, n = mean_sd(d)
+    if n < 2:
+        return m, None, None, n
+    return m, 2 * sd / math.sqrt(n), math.sqrt(sum(x * x for x in d) / n), n
 
 
 def cell(values, digits):
@@ -197,6 +221,7 @@ class Report:
                 xs.append(x)
                 self.say("| " + " | ".join(cells) + " |")
             self.say("")
+            self.paired(ref, [s for s, _ in have if s != ref])
             fig, ax = plt.subplots(figsize=(5, 3.5))
             for key, label in (("thickness", "final (highest top)"), ("half_solid", "half-solid")):
                 ax.errorbar(xs, ms[key], yerr=es[key], fmt="o-", capsize=3, label=label)
@@ -208,6 +233,33 @@ class Report:
             name = "_".join(re.findall(r"[a-z0-9]+", re.split("[:,]", title)[0].lower().replace("'", "")))
             fig.savefig(self.figures / f"convergence_{name}.png", dpi=120)
             plt.close(fig)
+
+    def paired(self, ref, steps):
+        """The series' steps against ref seed by seed: mean difference ± twice its standard error,
+        bold where it exceeds that; the last column is the rms of the half-solid differences, how far
+        one film lies from its twin (against the seed s.d. of the reference)."""
+        rows = []
+        for s in steps:
+            cells, n_pairs = [s], 0
+            for key, _, digits in PAIRED:
+                m, se2, _, n = paired_difference(self.steps[s], self.steps[ref], key)
+                n_pairs = max(n_pairs, n)
+                if se2 is None:
+                    cells.append("–")
+                else:
+                    text = f"{m:+.{digits}f} ± {se2:.{digits}f}"
+                    cells.append(f"**{text}**" if abs(m) > se2 else text)
+            if n_pairs < 2:
+                continue
+            _, _, rms, _ = paired_difference(self.steps[s], self.steps[ref], "half_solid")
+            _, sd_ref, _ = mean_sd([y["half_solid"] for y in self.steps[ref]])
+            rows.append("| " + " | ".join(cells[:1] + [str(n_pairs)] + cells[1:]) + f" | {rms:.2f} / {sd_ref:.2f} |")
+        if rows:
+            self.say(f"Paired by seed against {ref} (mean seed-wise difference ± twice its standard error; "
+                     "**bold**: moves):", "",
+                     "| step | pairs | " + " | ".join(f"Δ {label}" for _, label, _ in PAIRED) +
+                     " | half-solid: rms of the differences / seed s.d. of the reference (µm) |",
+                     "|---|---|" + "---|" * len(PAIRED) + "---|", *rows, "")
 
     def seed_sd(self, key):
         """The seed s.d. of a quantity: of the force-ratio film where it has several seeds (q_base, then
