@@ -44,6 +44,10 @@
 #               candidate setting (force ratio, f = 9e3, k = 9e5, e = 7.5, S = 4) in a 40 um box:
 #               the film whose push number the paper's scheme distorts (~2e6 steps, 13,382
 #               particles: ~3.6 h on one core; checkpointed every 10 min, resumed by rerunning)
+#   r20_e7.5_s4_x the same with the explicit reference (velocity Verlet, step set by the guard
+#               under a cap of 1e-10 s), the candidate's integrator since the paired reading
+#               (docs/validation.md "Read by seed"): the kick at f = 0.5 misses the NCM-CB
+#               coordination by ~9 % there, the explicit step meets f = 0.25 film by film
 #   q_paper_cap9 q_paper_f065
 #               the paper's scheme (q_paper) with the semi-implicit step cap at 1e-9 s instead of
 #               1e-10 s, so that the guard alone sets the step, at the critical-step fraction 0.5
@@ -146,6 +150,10 @@ for step in "$@"; do
       --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100 \
       --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set film.box_x=40um --set film.box_y=40um ;;
+    r20_e7.5_s4_x) study r20_e7.5_s4_x paper_20.1.toml --set scaling.scheme=force_ratio \
+      --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100 \
+      --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
+      --set film.box_x=40um --set film.box_y=40um --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
     q_paper_cap9) study q_paper_cap9 quick.toml --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.5 ;;
     q_paper_f065) study q_paper_f065 quick.toml --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 ;;
     p20) study p20 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um "${old_paper_step[@]}" ;;
