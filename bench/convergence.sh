@@ -32,6 +32,9 @@
 #   q_e7.5_s4_x the candidate with the explicit reference integrator (velocity Verlet), its step
 #               cap lifted to the semi-implicit one's (1e-10 s) so that the guard sets both: the
 #               check of the integration against the reference at the same physical setting
+#   q_e24_s4_x  the same check at the chosen setting e = 24, S = 4 (examples/quick_converged.toml):
+#               whether the kick's excess of NCM-CB contacts at e = 7.5 (docs/validation.md "Read
+#               by seed") is there too (~1.5e6 steps a seed, ~25 min on one core)
 #   q_e7.5_s4_f025 q_e7.5_s4_f065
 #               step knob at the candidate: numerics.critical_step_fraction 0.25 (half the guarded
 #               step, which the guard keeps following the packing) and 0.65 (1.3x, the largest the
@@ -136,6 +139,8 @@ for step in "$@"; do
       --set numerics.implicit_stiffness=true --set run.time_step=8e-11 ;;
     q_e7.5_s4_is16) study q_e7.5_s4_is16 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set numerics.implicit_stiffness=true --set run.time_step=1.6e-10 ;;
+    q_e24_s4_x) study q_e24_s4_x $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=4 \
+      --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
     q_e7.5_s4_x) study q_e7.5_s4_x $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
     q_e7.5_s4_f025) study q_e7.5_s4_f025 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \

@@ -60,6 +60,8 @@ SERIES = {
     "overlap knob e, at S = 4": ("q_e7.5_s4", [("q_e7.5_s4", 7.5), ("q_e24_s4", 24)]),
     "density scaling S, at e = 7.5": ("q_e7.5_s4", [("q_e7.5", 1), ("q_e7.5_s4", 4)]),
     "Stokes knob k b, at e = 7.5 and S = 4": ("q_e7.5_s4", [("q_e7.5_s4_b33", 1e7), ("q_e7.5_s4", 9e7)]),
+    "integrator at e = 24 and S = 4 (the chosen setting): semi-implicit 1, explicit reference 2": (
+        "q_e24_s4", [("q_e24_s4", 1), ("q_e24_s4_x", 2)]),
     "integrator at e = 7.5 and S = 4: semi-implicit 1, explicit reference 2": (
         "q_e7.5_s4", [("q_e7.5_s4", 1), ("q_e7.5_s4_x", 2)]),
     "implicit self-stiffness at e = 7.5 and S = 4: step (s), the guarded kick's mean 4.2e-11 s": (
@@ -79,7 +81,7 @@ SERIES = {
     "solver tolerance of the quasi-static step": ("q_qs", [("q_qs", 1e-4), ("q_qs_tol3", 1e-3)]),
     "displacement per quasi-static step (nm)": ("q_qs", [("q_qs", 37.5), ("q_qs_d75", 75)]),
 }
-STEPS = ["q_paper", "q_paper_cap9", "q_paper_f065", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s16",
+STEPS = ["q_paper", "q_paper_cap9", "q_paper_f065", "q_base", "q_e1", "q_e2.4", "q_e7.5", "q_e24", "q_e240", "q_b33", "q_b316", "q_ecb400", "q_e24_s4", "q_e24_s4_x", "q_e24_s16",
          "q_e7.5_s4", "q_e7.5_s4_b33", "q_e7.5_s4_b10", "q_e7.5_s4_x", "q_e7.5_s4_is8", "q_e7.5_s4_is16", "q_e7.5_s4_f025", "q_e7.5_s4_f065", "r20_e7.5_s4", "r20_e7.5_s4_x", "p20", "p20_f065", "p20_sk02", "q_paper_new", "q_paper_x", "q_paper_is5", "q_paper_is10", "p20_is10", "m75", "m75_is10", "q_dt_half", "q_qs", "q_qs_tol3", "q_qs_d75"]
 
 
