@@ -242,18 +242,19 @@ class Report:
         one film lies from its twin (against the seed s.d. of the reference)."""
         rows = []
         for s in steps:
-            cells, n_pairs = [s], 0
+            cells, n_pairs, rms = [s], 0, None
             for key, _, digits in PAIRED:
-                m, se2, _, n = paired_difference(self.steps[s], self.steps[ref], key)
+                m, se2, key_rms, n = paired_difference(self.steps[s], self.steps[ref], key)
                 n_pairs = max(n_pairs, n)
+                if key == "half_solid":
+                    rms = key_rms
                 if se2 is None:
                     cells.append("–")
                 else:
                     text = f"{m:+.{digits}f} ± {se2:.{digits}f}"
                     cells.append(f"**{text}**" if abs(m) > se2 else text)
-            if n_pairs < 2:
+            if n_pairs < 2 or rms is None:
                 continue
-            _, _, rms, _ = paired_difference(self.steps[s], self.steps[ref], "half_solid")
             _, sd_ref, _ = mean_sd([y["half_solid"] for y in self.steps[ref]])
             rows.append("| " + " | ".join(cells[:1] + [str(n_pairs)] + cells[1:]) + f" | {rms:.2f} / {sd_ref:.2f} |")
         if rows:
