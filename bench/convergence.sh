@@ -113,6 +113,11 @@ fr=quick_force_ratio.toml
 # default is the guard alone (cap 1e-9 s, f = 0.65), which q_paper_f065 and p20_f065 set.
 old_paper_step=(--set run.time_step=1e-10 --set numerics.critical_step_fraction=0.5)
 new_paper_step=(--set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 --set numerics.skin=0.2um)
+# The explicit reference with its cap at the semi-implicit one's, so that the guard sets the step.
+explicit=(--set numerics.integrator=explicit --set run.time_step=1e-10)
+# The paper's 20.1 mg/cm2 recipe at the candidate setting in a 40 um box.
+r20=(--set scaling.scheme=force_ratio --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100
+     --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 --set film.box_x=40um --set film.box_y=40um)
 qs=(--set numerics.integrator=quasi_static --set scaling.time_factor=1 --set scaling.viscosity_reduction=1
     --set scaling.stiffness_factor=1)
 for step in "$@"; do
@@ -139,10 +144,8 @@ for step in "$@"; do
       --set numerics.implicit_stiffness=true --set run.time_step=8e-11 ;;
     q_e7.5_s4_is16) study q_e7.5_s4_is16 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set numerics.implicit_stiffness=true --set run.time_step=1.6e-10 ;;
-    q_e24_s4_x) study q_e24_s4_x $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=4 \
-      --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
-    q_e7.5_s4_x) study q_e7.5_s4_x $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
-      --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
+    q_e24_s4_x) study q_e24_s4_x $fr --set scaling.stiffness_factor=24 --set scaling.cb_density_scaling=4 "${explicit[@]}" ;;
+    q_e7.5_s4_x) study q_e7.5_s4_x $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 "${explicit[@]}" ;;
     q_e7.5_s4_f025) study q_e7.5_s4_f025 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
       --set numerics.critical_step_fraction=0.25 ;;
     q_e7.5_s4_f065) study q_e7.5_s4_f065 $fr --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
@@ -151,14 +154,8 @@ for step in "$@"; do
     q_qs) study q_qs $fr "${qs[@]}" ;;
     q_qs_tol3) study q_qs_tol3 $fr "${qs[@]}" --set numerics.solver_tolerance=1e-3 ;;
     q_qs_d75) study q_qs_d75 $fr "${qs[@]}" --set numerics.max_displacement=75nm ;;
-    r20_e7.5_s4) study r20_e7.5_s4 paper_20.1.toml --set scaling.scheme=force_ratio \
-      --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100 \
-      --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
-      --set film.box_x=40um --set film.box_y=40um ;;
-    r20_e7.5_s4_x) study r20_e7.5_s4_x paper_20.1.toml --set scaling.scheme=force_ratio \
-      --set scaling.time_factor=9e5 --set scaling.viscosity_reduction=100 \
-      --set scaling.stiffness_factor=7.5 --set scaling.cb_density_scaling=4 \
-      --set film.box_x=40um --set film.box_y=40um --set numerics.integrator=explicit --set run.time_step=1e-10 ;;
+    r20_e7.5_s4) study r20_e7.5_s4 paper_20.1.toml "${r20[@]}" ;;
+    r20_e7.5_s4_x) study r20_e7.5_s4_x paper_20.1.toml "${r20[@]}" "${explicit[@]}" ;;
     q_paper_cap9) study q_paper_cap9 quick.toml --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.5 ;;
     q_paper_f065) study q_paper_f065 quick.toml --set run.time_step=1e-9 --set numerics.critical_step_fraction=0.65 ;;
     p20) study p20 paper_20.1.toml --set film.box_x=40um --set film.box_y=40um "${old_paper_step[@]}" ;;
